@@ -1,0 +1,40 @@
+# SPDX-License-Identifier: Apache-2.0
+# scw_verilate(): one Verilated model of one RTL module at one parameter set.
+#
+#   scw_verilate(<target> TOP <module> PREFIX <Vname> [STAGE <dir>] [PARAMS Name=Value ...])
+#
+# Reads the package, every primitive in rtl_models/common and, with STAGE, rtl_models/<dir>.
+# The C++ side declares the same parameter values once in a constexpr struct and
+# static_asserts them against the model's /*verilator public*/ parameters, so a mismatch
+# between this call and the C++ fails the build rather than the test.
+set(SCW_RTL_DIR "${CMAKE_CURRENT_LIST_DIR}/../rtl_models")
+
+function(scw_verilate target)
+  cmake_parse_arguments(ARG "" "TOP;PREFIX;STAGE" "PARAMS" ${ARGN})
+  file(GLOB common_sv CONFIGURE_DEPENDS "${SCW_RTL_DIR}/common/*.sv")
+  list(REMOVE_ITEM common_sv "${SCW_RTL_DIR}/common/scw_pkg.sv")
+  set(sources "${SCW_RTL_DIR}/common/scw_pkg.sv" ${common_sv})
+  if(ARG_STAGE)
+    file(GLOB stage_sv CONFIGURE_DEPENDS "${SCW_RTL_DIR}/${ARG_STAGE}/*.sv")
+    list(APPEND sources ${stage_sv})
+  endif()
+  set(gargs "")
+  foreach(p IN LISTS ARG_PARAMS)
+    list(APPEND gargs "-G${p}")
+  endforeach()
+  verilate(${target}
+    TOP_MODULE ${ARG_TOP}
+    PREFIX ${ARG_PREFIX}
+    SOURCES ${sources}
+    TRACE_FST
+    VERILATOR_ARGS ${gargs} -O3 -Wno-fatal --x-assign fast --x-initial fast)
+endfunction()
+
+# scw_rtl_model_library(<name>): a static library to scw_verilate() models into. Its Verilator
+# and generated headers are SYSTEM for its users, so their warnings do not drown ours.
+function(scw_rtl_model_library name)
+  add_library(${name} STATIC)
+  target_link_libraries(${name} PUBLIC Threads::Threads)
+  set_target_properties(${name} PROPERTIES
+    INTERFACE_SYSTEM_INCLUDE_DIRECTORIES $<TARGET_PROPERTY:${name},INTERFACE_INCLUDE_DIRECTORIES>)
+endfunction()

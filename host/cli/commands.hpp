@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: Apache-2.0
+// Registration of the `scw` subcommands: one function per cmd_<name>.cpp.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace scw::cli {
+
+void add_info_command(CLI::App& app);
+void add_vectors_command(CLI::App& app);
+void add_stream_command(CLI::App& app);
+
+}  // namespace scw::cli

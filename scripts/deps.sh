@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Installs what scw needs from Debian's packages, only if something is missing (fast otherwise).
+set -euo pipefail
+
+# cmake/g++/make/ninja: build; verilator + zlib1g-dev: RTL simulation with FST traces;
+# yosys: synthesis checks; libopencv-dev, libeigen3-dev: references and image I/O;
+# catch2, libcli11-dev, nlohmann-json3-dev: tests, CLI, manifests; libssl-dev: SHA-256 of
+# golden vectors (OpenSSL's EVP, not a hand-written hash); git: cloning and CI.
+packages=(cmake g++ make ninja-build pkg-config git verilator zlib1g-dev yosys libopencv-dev
+          libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libssl-dev)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "scw: installing missing Debian packages: ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null; then sudo="sudo"; else
+    echo "scw: need root (or sudo) to install: ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,196 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Synthesise one RTL module with Yosys synth_xilinx and print its 7-series resources (docs/rtl.md).
+#
+# Usage: scripts/rtl_synth.sh <module> [Param=value ...] [options]
+#   --log FILE      write the full Yosys log to FILE (default: a temporary directory, removed
+#                   unless the run fails)
+#   --expect-bram   fail unless the design uses a RAMB18E1/RAMB36E1, no LUT RAM, and fewer
+#                   than --max-ff flip-flops (proves a memory went to block RAM)
+#   --max-ff N      flip-flop limit for --expect-bram (default 200)
+#   --cells         print every cell type and count, not only the summary
+#   --no-ltp        skip the logic-depth measurement (ltp) on very large designs
+#
+# Reads the files listed by scripts/rtl_lint.sh --files <module>, applies the parameters
+# with chparam, runs `synth_xilinx -flatten -top <module>`, `stat`, and `ltp -noff` with
+# flip-flops, block RAMs and I/O buffers excluded, and prints one line:
+#   <module> [Param=value ...]: LUT=.. FF=.. RAMB18=.. RAMB36=.. DSP=.. LUTRAM=.. SRL=..
+#   logic_levels=.. yosys_s=..
+# LUT counts LUT1..LUT6 (and LUT6_2), FF counts FD* cells, logic_levels is the longest
+# register-to-register (or port) path in cells (Yosys `ltp`: LUTs, CARRY4s, MUXF7/8 each
+# count one). Environment: YOSYS (default: yosys on PATH). Needs only bash, grep, sed, awk.
+set -euo pipefail
+
+usage() {
+  echo "usage: scripts/rtl_synth.sh <module> [Param=value ...] [--log FILE] [--expect-bram]" \
+    "[--max-ff N] [--cells] [--no-ltp]" >&2
+  exit 2
+}
+
+script_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$script_dir/.." && pwd)"
+
+module=""
+params=()
+log=""
+expect_bram=0
+max_ff=200
+show_cells=0
+run_ltp=1
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --log) [[ $# -ge 2 ]] || usage; log="$2"; shift 2 ;;
+    --log=*) log="${1#--log=}"; shift ;;
+    --expect-bram) expect_bram=1; shift ;;
+    --max-ff) [[ $# -ge 2 ]] || usage; max_ff="$2"; shift 2 ;;
+    --max-ff=*) max_ff="${1#--max-ff=}"; shift ;;
+    --cells) show_cells=1; shift ;;
+    --no-ltp) run_ltp=0; shift ;;
+    -h|--help) usage ;;
+    -*) echo "rtl_synth: unknown option $1" >&2; usage ;;
+    *=*)
+      if [[ ! "$1" =~ ^[A-Za-z_][A-Za-z0-9_]*=.+$ ]]; then
+        echo "rtl_synth: expected Param=value, got '$1'" >&2
+        exit 2
+      fi
+      params+=("$1"); shift ;;
+    *)
+      [[ -z "$module" ]] || usage
+      module="$1"; shift ;;
+  esac
+done
+[[ -n "$module" ]] || usage
+[[ "$max_ff" =~ ^[0-9]+$ ]] || { echo "rtl_synth: --max-ff needs a number" >&2; exit 2; }
+
+yosys="${YOSYS:-yosys}"
+if ! command -v "$yosys" > /dev/null 2>&1; then
+  echo "rtl_synth: '${yosys}' not found; install Yosys 0.23 or set YOSYS" >&2
+  exit 1
+fi
+
+listing="$(bash "$script_dir/rtl_lint.sh" --files "$module")"
+
+work="$(mktemp -d "${TMPDIR:-/tmp}/scw_rtl_synth.XXXXXX")"
+keep_work=0
+cleanup() {
+  if [[ $keep_work -eq 0 ]]; then
+    rm -rf "$work"
+  fi
+}
+trap cleanup EXIT
+if [[ -z "$log" ]]; then
+  log="$work/yosys.log"
+  own_log=1
+else
+  mkdir -p "$(dirname "$log")"
+  own_log=0
+fi
+
+# Yosys splits script lines at blanks, so the script names files through a link to the
+# repository root and runs inside the work directory: no absolute path reaches Yosys.
+ln -s "$root" "$work/root"
+read_files=""
+libdirs=""
+while read -r kind path; do
+  case "$kind" in
+    file) read_files+=" root/$path" ;;
+    libdir) libdirs+=" -libdir root/$path" ;;
+  esac
+done <<< "$listing"
+
+chparam=""
+for p in "${params[@]+"${params[@]}"}"; do
+  chparam+=" -set ${p%%=*} ${p#*=}"
+done
+
+{
+  echo "read_verilog -sv${read_files}"
+  if [[ -n "$chparam" ]]; then
+    echo "chparam${chparam} ${module}"
+  fi
+  echo "hierarchy -check -top ${module}${libdirs}"
+  echo "synth_xilinx -flatten -top ${module}"
+  echo "tee -q -o stat.txt stat"
+  if [[ $run_ltp -eq 1 ]]; then
+    # Xilinx flip-flops are not "FF cell types" to ltp -noff (those are Yosys' internal
+    # $_DFF_*), so select them away, with block RAMs (registered) and I/O buffers.
+    echo "tee -q -o ltp.txt ltp -noff t:FD* t:RAMB* t:IBUF t:OBUF t:BUFG %u %u %u %u %n"
+  fi
+} > "$work/synth.ys"
+
+label="$module${params[*]+ ${params[*]}}"
+t0="$(date +%s%N)"
+status=0
+(cd "$work" && "$yosys" -q -l "$log" -s synth.ys > console.txt 2>&1) || status=$?
+t1="$(date +%s%N)"
+secs="$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", (b - a) / 1e9 }')"
+
+if [[ $status -ne 0 ]]; then
+  keep_work=$own_log
+  echo "rtl_synth: ${label}: Yosys failed (exit ${status}) after ${secs} s" >&2
+  grep -E 'ERROR|[Ee]rror:' "$log" | head -n 20 >&2 || true
+  echo "--- last lines of the log ---" >&2
+  tail -n 12 "$log" >&2
+  echo "rtl_synth: full log: ${log}" >&2
+  exit 1
+fi
+
+# Cell table of the (single, flattened) top module: "     <type>   <count>".
+cells="$(awk '
+  /^=== / { sections++ }
+  sections == 1 && /Number of cells:/ { incells = 1; next }
+  sections == 1 && incells && NF == 2 && $2 ~ /^[0-9]+$/ { print $1, $2; next }
+  sections == 1 && incells && NF == 0 { incells = 0 }
+' "$work/stat.txt")"
+
+sum_cells() {  # sum the counts of cell types matching an extended regex
+  printf '%s\n' "$cells" | awk -v re="$1" '$1 ~ re { n += $2 } END { print n + 0 }'
+}
+lut="$(sum_cells '^LUT[1-6](_2)?$')"
+ff="$(sum_cells '^FD[A-Z]*(_1)?$')"
+ramb18="$(sum_cells '^RAMB18E1$')"
+ramb36="$(sum_cells '^RAMB36E1$')"
+dsp="$(sum_cells '^DSP48E1$')"
+lutram="$(sum_cells '^RAM[0-9]+(X[0-9]+[SD]|M[0-9]*)$')"
+srl="$(sum_cells '^SRLC?[0-9]+E$')"
+
+levels="n/a"
+if [[ $run_ltp -eq 1 ]]; then
+  levels="$(sed -n 's/.*Longest topological path.*(length=\([0-9]*\)).*/\1/p' "$work/ltp.txt" \
+    | head -n 1)"
+  [[ -n "$levels" ]] || levels="0"
+  if grep -q 'Detected loop' "$work/ltp.txt"; then
+    echo "rtl_synth: ${label}: WARNING: ltp found a combinational loop (see ltp in the log)" >&2
+    levels="${levels}(loop)"
+  fi
+fi
+
+if [[ $show_cells -eq 1 || $expect_bram -eq 1 ]]; then
+  echo "cells of ${label} after synth_xilinx -flatten:"
+  printf '%s\n' "$cells" | awk '{ printf "  %-12s %8d\n", $1, $2 }'
+fi
+echo "${label}: LUT=${lut} FF=${ff} RAMB18=${ramb18} RAMB36=${ramb36} DSP=${dsp}" \
+  "LUTRAM=${lutram} SRL=${srl} logic_levels=${levels} yosys_s=${secs}"
+
+if [[ $expect_bram -eq 1 ]]; then
+  fail=""
+  if [[ $((ramb18 + ramb36)) -lt 1 ]]; then
+    fail+=" no RAMB18E1/RAMB36E1;"
+  fi
+  if [[ $lutram -ne 0 ]]; then
+    fail+=" ${lutram} LUT RAM cells;"
+  fi
+  if [[ $ff -ge $max_ff ]]; then
+    fail+=" ${ff} flip-flops (limit ${max_ff});"
+  fi
+  if [[ -n "$fail" ]]; then
+    [[ $own_log -eq 1 ]] && keep_work=1
+    echo "rtl_synth: ${label}: block RAM check FAILED:${fail%;} (log: ${log})" >&2
+    exit 1
+  fi
+  echo "rtl_synth: ${label}: block RAM check passed (RAMB18=${ramb18} RAMB36=${ramb36}," \
+    "LUTRAM=0, FF=${ff} < ${max_ff})"
+fi
+if [[ $own_log -eq 0 ]]; then
+  echo "rtl_synth: log: ${log}"
+fi

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# The main job on the bundled data: installs what is missing, builds, and streams the Tsukuba
+# left image through the Verilated line buffer in the cycle simulator (3 frames, P = 2),
+# checking every beat and writing out/stream/report.json and a golden vector set.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+"$root/scripts/build.sh" --target scw
+cd "$root"
+./build/host/cli/scw stream --image data/tsukuba/scene1.row3.col3.ppm --ppc 2 --engine rtl \
+  --frames 3 --out-dir out/stream "$@"
+./build/host/cli/scw vectors verify out/stream/vectors

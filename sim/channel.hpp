@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: Apache-2.0
+// Bounded, named FIFO channel: the C++ twin of scw_fifo and the wire between sim/ components.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hls/common/beat.hpp"
+
+namespace scw::sim {
+
+/// Cycle stamps of one frame on one channel; -1 = not seen. A transfer in cycle c is the
+/// valid && ready of cycle c.
+struct FrameStamp {
+  std::int64_t first_push = -1;
+  std::int64_t last_push = -1;
+  std::int64_t first_pop = -1;
+  std::int64_t last_pop = -1;
+};
+
+/// Type-erased view of a channel, for the simulator's reports and deadlock detection.
+class ChannelBase {
+ public:
+  ChannelBase(std::string name, int depth) : name_(std::move(name)), depth_(depth) {
+    if (depth_ < 1) throw std::invalid_argument("FIFO '" + name_ + "' needs a depth >= 1");
+  }
+  virtual ~ChannelBase() = default;
+  ChannelBase(const ChannelBase&) = delete;
+  ChannelBase& operator=(const ChannelBase&) = delete;
+
+  const std::string& name() const { return name_; }
+  int depth() const { return depth_; }
+  virtual int size() const = 0;
+  int max_occupancy() const { return max_occupancy_; }
+  std::uint64_t pushes() const { return pushes_; }
+  std::uint64_t pops() const { return pops_; }
+  const std::vector<FrameStamp>& frames() const { return frames_; }
+  /// True if a beat entered or left during the last committed cycle.
+  bool moved() const { return moved_; }
+
+  /// The clock edge that ends cycle `cycle`: applies this cycle's pop and push.
+  virtual void commit(std::int64_t cycle) = 0;
+
+  // Endpoint names, filled in when components connect, so reports say who waits on whom.
+  std::string producer = "?";
+  std::string consumer = "?";
+
+ protected:
+  FrameStamp& stamp(int frame) {
+    if (frame >= static_cast<int>(frames_.size())) frames_.resize(static_cast<std::size_t>(frame) + 1);
+    return frames_[static_cast<std::size_t>(frame)];
+  }
+
+  std::string name_;
+  int depth_;
+  int max_occupancy_ = 0;
+  std::uint64_t pushes_ = 0;
+  std::uint64_t pops_ = 0;
+  bool moved_ = false;
+  std::vector<FrameStamp> frames_;
+};
+
+/// A FIFO with registered flags, as rtl_models/common/scw_fifo.sv: `can_push()`/`can_pop()`
+/// reflect the state at the start of the cycle, so a beat pushed in cycle t is visible in
+/// t + 1 and a slot freed in t can be refilled in t + 1. That makes the order in which
+/// components are evaluated irrelevant.
+template <typename T>
+class Fifo : public ChannelBase {
+ public:
+  using value_type = T;
+  using ChannelBase::ChannelBase;
+
+  int size() const override { return static_cast<int>(q_.size()); }
+  bool can_push() const { return size() < depth_; }
+  bool can_pop() const { return !q_.empty(); }
+  const T& front() const {
+    if (q_.empty()) throw std::logic_error("FIFO '" + name_ + "': front() on empty FIFO");
+    return q_.front();
+  }
+  void push(const T& v) {
+    if (!can_push() || pending_push_)
+      throw std::logic_error("FIFO '" + name_ + "': push without space (check can_push)");
+    pending_push_ = true;
+    pushed_ = v;
+  }
+  void pop() {
+    if (!can_pop() || pending_pop_)
+      throw std::logic_error("FIFO '" + name_ + "': pop of an empty FIFO (check can_pop)");
+    pending_pop_ = true;
+  }
+
+  void commit(std::int64_t cycle) override {
+    moved_ = pending_pop_ || pending_push_;
+    if (pending_pop_) {
+      const T& v = q_.front();
+      if (hls::starts_frame(v, after_last_pop_)) ++pop_frame_;
+      after_last_pop_ = hls::ends_burst(v);
+      if (pop_frame_ >= 0) {
+        FrameStamp& s = stamp(pop_frame_);
+        if (s.first_pop < 0) s.first_pop = cycle;
+        s.last_pop = cycle;
+      }
+      q_.pop_front();
+      ++pops_;
+    }
+    if (pending_push_) {
+      if (hls::starts_frame(pushed_, after_last_push_)) ++push_frame_;
+      after_last_push_ = hls::ends_burst(pushed_);
+      if (push_frame_ >= 0) {
+        FrameStamp& s = stamp(push_frame_);
+        if (s.first_push < 0) s.first_push = cycle;
+        s.last_push = cycle;
+      }
+      q_.push_back(pushed_);
+      ++pushes_;
+    }
+    pending_pop_ = pending_push_ = false;
+    if (size() > max_occupancy_) max_occupancy_ = size();
+  }
+
+ private:
+  std::deque<T> q_;
+  T pushed_{};
+  bool pending_push_ = false;
+  bool pending_pop_ = false;
+  int push_frame_ = -1;
+  int pop_frame_ = -1;
+  bool after_last_push_ = true;  // a packet stream's first beat starts a frame
+  bool after_last_pop_ = true;
+};
+
+}  // namespace scw::sim

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: Apache-2.0
+// Packing of beats into RTL words: {eol, sof, payload}, the layout FIFOs and hex vectors use.
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#include "hls/common/beat.hpp"
+#include "hls/common/line_buffer.hpp"
+#include "sim/bits.hpp"
+
+namespace scw::sim {
+
+template <typename T>
+constexpr int value_bits() {
+  static_assert(std::is_unsigned_v<T>, "pixels are unsigned integers");
+  return static_cast<int>(sizeof(T) * 8);
+}
+
+/// Width and packing of a beat's payload (pixels) and of the whole word with its flags.
+template <typename B>
+struct BeatLayout;
+
+template <typename T, int P>
+struct BeatLayout<hls::Beat<T, P>> {
+  using beat_t = hls::Beat<T, P>;
+  static constexpr int kPayloadBits = P * value_bits<T>();
+  static constexpr int kBits = kPayloadBits + 2;
+
+  static Bits payload(const beat_t& b) {
+    Bits w(kPayloadBits);
+    for (int i = 0; i < P; ++i) w.set(i * value_bits<T>(), value_bits<T>(), b.px[i]);
+    return w;
+  }
+  static beat_t from_payload(const Bits& w, bool sof, bool eol) {
+    beat_t b;
+    for (int i = 0; i < P; ++i) b.px[i] = static_cast<T>(w.get(i * value_bits<T>(), value_bits<T>()));
+    b.sof = sof;
+    b.eol = eol;
+    return b;
+  }
+  static bool sof(const beat_t& b) { return b.sof; }
+  static bool eol(const beat_t& b) { return b.eol; }
+};
+
+template <typename T, int P, int Rows>
+struct BeatLayout<hls::ColumnBeat<T, P, Rows>> {
+  using beat_t = hls::ColumnBeat<T, P, Rows>;
+  static constexpr int kRowBits = P * value_bits<T>();
+  static constexpr int kPayloadBits = Rows * kRowBits;
+  static constexpr int kBits = kPayloadBits + 2;
+
+  static Bits payload(const beat_t& b) {
+    Bits w(kPayloadBits);
+    for (int k = 0; k < Rows; ++k)
+      for (int i = 0; i < P; ++i)
+        w.set(k * kRowBits + i * value_bits<T>(), value_bits<T>(), b.rows[k][i]);
+    return w;
+  }
+  static beat_t from_payload(const Bits& w, bool sof, bool eol) {
+    beat_t b;
+    for (int k = 0; k < Rows; ++k)
+      for (int i = 0; i < P; ++i)
+        b.rows[k][i] =
+            static_cast<T>(w.get(k * kRowBits + i * value_bits<T>(), value_bits<T>()));
+    b.sof = sof;
+    b.eol = eol;
+    return b;
+  }
+  static bool sof(const beat_t& b) { return b.sof; }
+  static bool eol(const beat_t& b) { return b.eol; }
+};
+
+/// The whole word: payload in the low bits, then sof, then eol.
+template <typename B>
+Bits pack(const B& b) {
+  using L = BeatLayout<B>;
+  const Bits p = L::payload(b);
+  Bits w(L::kBits);
+  for (int lsb = 0; lsb < L::kPayloadBits; lsb += 32) {
+    const int n = std::min(32, L::kPayloadBits - lsb);
+    w.set(lsb, n, p.get(lsb, n));
+  }
+  w.set(L::kPayloadBits, 1, L::sof(b));
+  w.set(L::kPayloadBits + 1, 1, L::eol(b));
+  return w;
+}
+
+template <typename B>
+B unpack(const Bits& w) {
+  using L = BeatLayout<B>;
+  Bits p(L::kPayloadBits);
+  for (int lsb = 0; lsb < L::kPayloadBits; lsb += 32) {
+    const int n = std::min(32, L::kPayloadBits - lsb);
+    p.set(lsb, n, w.get(lsb, n));
+  }
+  return L::from_payload(p, w.get(L::kPayloadBits, 1) != 0, w.get(L::kPayloadBits + 1, 1) != 0);
+}
+
+}  // namespace scw::sim

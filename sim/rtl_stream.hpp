@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+// A Verilated one-in one-out stream module as a cycle model, interchangeable with its C++ twin.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "sim/cycle_model.hpp"
+#include "sim/pack.hpp"
+#include "sim/verilated_harness.hpp"
+
+namespace scw::sim {
+
+namespace detail {
+template <typename M, typename = void>
+struct has_flag_ports : std::false_type {};
+template <typename M>
+struct has_flag_ports<M, std::void_t<decltype(std::declval<M&>().in_sof_i)>> : std::true_type {};
+}  // namespace detail
+
+/// Binds the common port shape (in_valid_i/in_ready_o/in_data_i, out_valid_o/out_ready_i/
+/// out_data_o). Modules with in_sof_i/in_eol_i ports (stages) carry the flags on them and the
+/// pixels in *_data; opaque elastic blocks (FIFO, stream register, skid buffer) carry the whole
+/// packed beat {eol, sof, payload} in *_data.
+template <typename VM, typename In, typename Out>
+class RtlStream {
+ public:
+  using in_type = In;
+  using out_type = Out;
+
+  explicit RtlStream(const std::string& name) : h_(std::make_unique<Harness<VM>>(name)) {
+    h_->reset();
+  }
+
+  StreamOutputs<Out> eval(bool in_valid, const In& in, bool out_ready) {
+    VM& m = h_->dut();
+    m.in_valid_i = in_valid;
+    m.out_ready_i = out_ready;
+    if constexpr (detail::has_flag_ports<VM>::value) {
+      BeatLayout<In>::payload(in).to_port(m.in_data_i);
+      m.in_sof_i = BeatLayout<In>::sof(in);
+      m.in_eol_i = BeatLayout<In>::eol(in);
+    } else {
+      pack(in).to_port(m.in_data_i);
+    }
+    m.eval();
+    StreamOutputs<Out> o;
+    o.in_ready = m.in_ready_o;
+    o.out_valid = m.out_valid_o;
+    if constexpr (detail::has_flag_ports<VM>::value) {
+      o.out = BeatLayout<Out>::from_payload(
+          Bits::from_port(m.out_data_o, BeatLayout<Out>::kPayloadBits), m.out_sof_o, m.out_eol_o);
+    } else {
+      o.out = unpack<Out>(Bits::from_port(m.out_data_o, BeatLayout<Out>::kBits));
+    }
+    return o;
+  }
+  void tick() { h_->tick(); }
+
+  Harness<VM>& harness() { return *h_; }
+  VM& dut() { return h_->dut(); }
+
+ private:
+  std::unique_ptr<Harness<VM>> h_;
+};
+
+}  // namespace scw::sim

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: Apache-2.0
+// The one Verilator harness: owns the context and the model; reset, tick, optional FST trace.
+#pragma once
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <verilated.h>
+#include <verilated_fst_c.h>
+
+namespace scw::sim {
+
+/// Owns a VerilatedContext and one model `VM` with ports `clk_i` and `rst_ni`.
+/// Set the environment variable SCW_FST_DIR to a folder and every harness writes
+/// `<folder>/<name>.fst` (open it with GTKWave); unset, nothing is traced and nothing is paid.
+template <typename VM>
+class Harness {
+ public:
+  explicit Harness(const std::string& name) : ctx_(std::make_unique<VerilatedContext>()) {
+    const char* dir = std::getenv("SCW_FST_DIR");
+    if (dir != nullptr && *dir != '\0') ctx_->traceEverOn(true);
+    dut_ = std::make_unique<VM>(ctx_.get(), name.c_str());
+    if (dir != nullptr && *dir != '\0') {
+      std::filesystem::create_directories(dir);
+      trace_ = std::make_unique<VerilatedFstC>();
+      dut_->trace(trace_.get(), 99);
+      trace_->open((std::filesystem::path(dir) / (name + ".fst")).c_str());
+    }
+    dut_->clk_i = 0;
+    dut_->rst_ni = 1;
+    dut_->eval();
+  }
+  ~Harness() {
+    // Verilator 5.006 erases a model's scopes from the thread's *current* context, which is
+    // the last one evaluated on this thread, possibly another harness's, already destroyed
+    // (a hang or worse). Point it at ours first.
+    Verilated::threadContextp(ctx_.get());
+    if (trace_) trace_->close();
+    dut_->final();
+    dut_.reset();
+  }
+  Harness(const Harness&) = delete;
+  Harness& operator=(const Harness&) = delete;
+
+  VM& dut() { return *dut_; }
+  std::uint64_t cycles() const { return cycles_; }
+
+  /// Settles combinational logic after inputs change (no clock edge).
+  void eval() { dut_->eval(); }
+  /// Holds rst_ni low for `cycles` clock cycles (asynchronous reset, released between edges).
+  void reset(int cycles = 2) {
+    dut_->rst_ni = 0;
+    for (int i = 0; i < cycles; ++i) tick();
+    dut_->rst_ni = 1;
+    dut_->eval();
+  }
+  /// One clock cycle: rising edge with the current inputs, then the falling edge.
+  void tick() {
+    dut_->eval();
+    dump();
+    dut_->clk_i = 1;
+    dut_->eval();
+    ctx_->timeInc(1);
+    dump();
+    dut_->clk_i = 0;
+    dut_->eval();
+    ctx_->timeInc(1);
+    ++cycles_;
+  }
+
+ private:
+  void dump() {
+    if (trace_) trace_->dump(ctx_->time());
+  }
+
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<VM> dut_;
+  std::unique_ptr<VerilatedFstC> trace_;
+  std::uint64_t cycles_ = 0;
+};
+
+}  // namespace scw::sim
