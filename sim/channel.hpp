@@ -96,25 +96,12 @@ class Fifo : public ChannelBase {
   void commit(std::int64_t cycle) override {
     moved_ = pending_pop_ || pending_push_;
     if (pending_pop_) {
-      const T& v = q_.front();
-      if (hls::starts_frame(v, after_last_pop_)) ++pop_frame_;
-      after_last_pop_ = hls::ends_burst(v);
-      if (pop_frame_ >= 0) {
-        FrameStamp& s = stamp(pop_frame_);
-        if (s.first_pop < 0) s.first_pop = cycle;
-        s.last_pop = cycle;
-      }
+      pop_side_.note(*this, q_.front(), cycle, &FrameStamp::first_pop, &FrameStamp::last_pop);
       q_.pop_front();
       ++pops_;
     }
     if (pending_push_) {
-      if (hls::starts_frame(pushed_, after_last_push_)) ++push_frame_;
-      after_last_push_ = hls::ends_burst(pushed_);
-      if (push_frame_ >= 0) {
-        FrameStamp& s = stamp(push_frame_);
-        if (s.first_push < 0) s.first_push = cycle;
-        s.last_push = cycle;
-      }
+      push_side_.note(*this, pushed_, cycle, &FrameStamp::first_push, &FrameStamp::last_push);
       q_.push_back(pushed_);
       ++pushes_;
     }
@@ -127,10 +114,22 @@ class Fifo : public ChannelBase {
   T pushed_{};
   bool pending_push_ = false;
   bool pending_pop_ = false;
-  int push_frame_ = -1;
-  int pop_frame_ = -1;
-  bool after_last_push_ = true;  // a packet stream's first beat starts a frame
-  bool after_last_pop_ = true;
+  /// Frame tracking of one end (push or pop) of the FIFO.
+  struct Side {
+    int frame = -1;
+    bool after_last = true;  // a packet stream's first beat starts a frame
+    void note(Fifo& f, const T& v, std::int64_t cycle, std::int64_t FrameStamp::*first,
+              std::int64_t FrameStamp::*last) {
+      if (hls::starts_frame(v, after_last)) ++frame;
+      after_last = hls::ends_burst(v);
+      if (frame < 0) return;  // beats before the first frame start are not stamped
+      FrameStamp& s = f.stamp(frame);
+      if (s.*first < 0) s.*first = cycle;
+      s.*last = cycle;
+    }
+  };
+  Side push_side_;
+  Side pop_side_;
 };
 
 }  // namespace scw::sim
