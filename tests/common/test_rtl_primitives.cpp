@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // RTL primitives against their C++ twins: the same cycle trace under every stall pattern,
 // handshake rules checked every cycle, and the data against an independent expectation.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+
 #include <catch2/catch.hpp>
 
 #include "Vfifo_d1_scw_fifo.h"
@@ -183,4 +188,26 @@ TEST_CASE("scw_line_buffer flags malformed rows and recovers on the next sof",
   // The good frame after the bad one comes out exactly as the reference says.
   const std::vector<Out> tail(rr.out.end() - static_cast<long>(good_ref.size()), rr.out.end());
   CHECK(tail == good_ref);
+}
+
+TEST_CASE("SCW_FST_DIR switches FST tracing on", "[rtl][harness]") {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("scw_fst_" + std::to_string(static_cast<long>(::getpid())));
+  std::filesystem::remove_all(dir);
+  ::setenv("SCW_FST_DIR", dir.c_str(), 1);
+  {
+    sim::Harness<Vstream_reg> h("traced_reg");
+    h.reset();
+    for (int i = 0; i < 10; ++i) h.tick();
+  }
+  ::unsetenv("SCW_FST_DIR");
+  {
+    sim::Harness<Vstream_reg> h("untraced_reg");
+    h.tick();
+  }
+  const auto fst = dir / "traced_reg.fst";
+  REQUIRE(std::filesystem::exists(fst));
+  CHECK(std::filesystem::file_size(fst) > 0);
+  CHECK_FALSE(std::filesystem::exists(dir / "untraced_reg.fst"));
+  std::filesystem::remove_all(dir);
 }
