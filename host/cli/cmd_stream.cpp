@@ -4,12 +4,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <stdexcept>
-#include <string>
-
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <string>
 
 #include "Vcli_line_buffer_p1.h"
 #include "Vcli_line_buffer_p1_scw_line_buffer.h"
@@ -19,9 +18,12 @@
 #include "Vcli_line_buffer_p4_scw_line_buffer.h"
 #include "hls/common/line_buffer.hpp"
 #include "host/cli/commands.hpp"
+#include "host/reference/line_buffer_ref.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/components.hpp"
+#include "sim/frame_beats.hpp"
 #include "sim/pipeline_shell.hpp"
+#include "sim/rtl_params.hpp"
 #include "sim/rtl_stream.hpp"
 
 namespace scw::cli {
@@ -33,23 +35,24 @@ constexpr double kClockMhz = 125.0;  // the thesis FPGA's clock
 template <int P>
 using DemoParams = hls::LineBufferParams<P, kMaxWidthPx, kRows>;
 
-template <typename VM, typename Params>
-constexpr bool params_match() {
-  return VM::Ppc == Params::kPpc && VM::MaxWidthPx == Params::kMaxWidthPx &&
-         VM::Rows == Params::kRows && VM::Latency == Params::kLatency;
-}
-static_assert(params_match<Vcli_line_buffer_p1_scw_line_buffer, DemoParams<1>>());
-static_assert(params_match<Vcli_line_buffer_p2_scw_line_buffer, DemoParams<2>>());
-static_assert(params_match<Vcli_line_buffer_p4_scw_line_buffer, DemoParams<4>>());
+static_assert(sim::line_buffer_params_match<Vcli_line_buffer_p1_scw_line_buffer, DemoParams<1>>());
+static_assert(sim::line_buffer_params_match<Vcli_line_buffer_p2_scw_line_buffer, DemoParams<2>>());
+static_assert(sim::line_buffer_params_match<Vcli_line_buffer_p4_scw_line_buffer, DemoParams<4>>());
 
 template <int P>
 struct RtlModel;
 template <>
-struct RtlModel<1> { using type = Vcli_line_buffer_p1; };
+struct RtlModel<1> {
+  using type = Vcli_line_buffer_p1;
+};
 template <>
-struct RtlModel<2> { using type = Vcli_line_buffer_p2; };
+struct RtlModel<2> {
+  using type = Vcli_line_buffer_p2;
+};
 template <>
-struct RtlModel<4> { using type = Vcli_line_buffer_p4; };
+struct RtlModel<4> {
+  using type = Vcli_line_buffer_p4;
+};
 
 struct Options {
   std::string image;
@@ -65,14 +68,19 @@ nlohmann::json report_json(const sim::SimReport& r) {
   nlohmann::json j;
   j["cycles"] = r.cycles;
   for (const auto& f : r.fifos)
-    j["fifos"].push_back({{"name", f.name}, {"producer", f.producer}, {"consumer", f.consumer},
-                          {"depth", f.depth}, {"max_occupancy", f.max_occupancy},
+    j["fifos"].push_back({{"name", f.name},
+                          {"producer", f.producer},
+                          {"consumer", f.consumer},
+                          {"depth", f.depth},
+                          {"max_occupancy", f.max_occupancy},
                           {"beats", f.beats}});
   for (const auto& s : r.stages) {
     nlohmann::json st{{"name", s.name}, {"frames", nlohmann::json::array()}};
     for (const auto& f : s.frames)
-      st["frames"].push_back({{"first_in", f.first_in}, {"last_in", f.last_in},
-                              {"first_out", f.first_out}, {"last_out", f.last_out}});
+      st["frames"].push_back({{"first_in", f.first_in},
+                              {"last_in", f.last_in},
+                              {"first_out", f.first_out},
+                              {"last_out", f.last_out}});
     j["stages"].push_back(st);
   }
   return j;
@@ -87,22 +95,9 @@ void run(const Options& o, const cv::Mat& grey) {
   const int w = grey.cols, h = grey.rows;
 
   // Beats of one frame, and the expected windows by indexing the image directly.
-  std::vector<In> frame;
-  std::vector<Out> expect;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; x += P) {
-      In b;
-      Out e;
-      for (int i = 0; i < P; ++i) {
-        b.px[i] = grey.at<std::uint8_t>(y, x + i);
-        for (int k = 0; k < kRows; ++k)
-          e.rows[k][i] = y - k >= 0 ? grey.at<std::uint8_t>(y - k, x + i) : 0;
-      }
-      b.sof = e.sof = x == 0 && y == 0;
-      b.eol = e.eol = x + P == w;
-      frame.push_back(b);
-      expect.push_back(e);
-    }
+  const cv::Mat img = grey.isContinuous() ? grey : grey.clone();
+  const auto frame = sim::frame_beats<P>(img.ptr<std::uint8_t>(), w, h);
+  const auto expect = reference::line_buffer_reference<P, kRows>(img.ptr<std::uint8_t>(), w, h);
   std::vector<In> in;
   for (int f = 0; f < o.frames; ++f) in.insert(in.end(), frame.begin(), frame.end());
 
@@ -163,8 +158,12 @@ void run(const Options& o, const cv::Mat& grey) {
 
   // Golden vectors of one frame, replayable in any simulator with $readmemh.
   vectors::VectorWriter vw(dir / "vectors", "line_buffer",
-                           {{"ppc", P}, {"max_width_px", kMaxWidthPx}, {"rows", kRows},
-                            {"width", w}, {"height", h}, {"latency", Params::kLatency}},
+                           {{"ppc", P},
+                            {"max_width_px", kMaxWidthPx},
+                            {"rows", kRows},
+                            {"width", w},
+                            {"height", h},
+                            {"latency", Params::kLatency}},
                            "scw_line_buffer: each beat with the same columns of the 2 rows above");
   std::vector<sim::Bits> hex_in, hex_out;
   for (const auto& b : frame) hex_in.push_back(sim::pack(b));
@@ -201,8 +200,8 @@ void add_stream_command(CLI::App& app) {
     if (!o->roi.empty()) {
       const cv::Rect r(o->roi[0], o->roi[1], o->roi[2], o->roi[3]);
       if (r.width <= 0 || r.height <= 0 || (r & cv::Rect(0, 0, img.cols, img.rows)) != r)
-        throw std::runtime_error("--roi " + std::to_string(r.x) + " " + std::to_string(r.y) +
-                                 " " + std::to_string(r.width) + " " + std::to_string(r.height) +
+        throw std::runtime_error("--roi " + std::to_string(r.x) + " " + std::to_string(r.y) + " " +
+                                 std::to_string(r.width) + " " + std::to_string(r.height) +
                                  " is not inside the " + std::to_string(img.cols) + " x " +
                                  std::to_string(img.rows) + " image");
       img = img(r).clone();
@@ -213,12 +212,18 @@ void add_stream_command(CLI::App& app) {
                                std::to_string(kMaxWidthPx) + " px, in whole beats of " +
                                std::to_string(o->ppc) + " px; crop or resize it");
     std::cerr << "streaming " << img.cols << " x " << img.rows << " x " << o->frames
-              << " frames, P = " << o->ppc << ", engine " << o->engine << ", stalls "
-              << o->stalls << "\n";
+              << " frames, P = " << o->ppc << ", engine " << o->engine << ", stalls " << o->stalls
+              << "\n";
     switch (o->ppc) {
-      case 1: run<1>(*o, img); break;
-      case 2: run<2>(*o, img); break;
-      default: run<4>(*o, img); break;
+      case 1:
+        run<1>(*o, img);
+        break;
+      case 2:
+        run<2>(*o, img);
+        break;
+      default:
+        run<4>(*o, img);
+        break;
     }
   });
 }

@@ -8,6 +8,7 @@
 
 #include "hls/common/beat.hpp"
 #include "hls/common/line_buffer.hpp"
+#include "sim/frame_beats.hpp"
 #include "sim/pack.hpp"
 
 namespace scw::test {
@@ -41,22 +42,6 @@ std::vector<B> random_beats(std::size_t n, std::uint64_t seed) {
     b.sof = (rng() % 7) == 0;
     b.eol = (rng() % 5) == 0;
   }
-  return v;
-}
-
-/// A frame of random pixels, `width` x `height`, as beats of P pixels in raster order.
-template <int P>
-std::vector<hls::Beat<std::uint8_t, P>> frame_beats(const std::vector<std::uint8_t>& img,
-                                                    int width, int height) {
-  std::vector<hls::Beat<std::uint8_t, P>> v;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; x += P) {
-      hls::Beat<std::uint8_t, P> b;
-      for (int i = 0; i < P; ++i) b.px[i] = img[static_cast<std::size_t>(y * width + x + i)];
-      b.sof = (x == 0 && y == 0);
-      b.eol = (x + P == width);
-      v.push_back(b);
-    }
   return v;
 }
 

@@ -2,7 +2,7 @@
 // hls::LineBuffer against the whole-image reference, for P = 1, 2, 4 and several row counts.
 #include <catch2/catch.hpp>
 
-#include "tests/common/line_buffer_ref.hpp"
+#include "host/reference/line_buffer_ref.hpp"
 #include "tests/common/primitive_configs.hpp"
 
 namespace {
@@ -15,8 +15,8 @@ void check_kernel() {
   std::uint64_t seed = 100;
   for (const auto& wh : sizes) {
     const auto img = scw::test::random_image(wh[0], wh[1], seed++);
-    const auto in = scw::test::frame_beats<P>(img, wh[0], wh[1]);
-    const auto ref = scw::test::line_buffer_reference<P, Rows>(img, wh[0], wh[1]);
+    const auto in = scw::sim::frame_beats<P>(img.data(), wh[0], wh[1]);
+    const auto ref = scw::reference::line_buffer_reference<P, Rows>(img.data(), wh[0], wh[1]);
     for (std::size_t i = 0; i < in.size(); ++i) REQUIRE(lb.step(in[i]) == ref[i]);
   }
   CHECK_FALSE(lb.error());
@@ -34,6 +34,6 @@ TEST_CASE("hls::LineBuffer equals the whole-image reference", "[hls][line_buffer
 TEST_CASE("hls::LineBuffer flags a row longer than its RAM", "[hls][line_buffer][malformed]") {
   scw::hls::LineBuffer<std::uint8_t, scw::hls::LineBufferParams<1, 8, 2>> lb;
   const auto img = scw::test::random_image(10, 2, 1);
-  for (const auto& b : scw::test::frame_beats<1>(img, 10, 2)) lb.step(b);
+  for (const auto& b : scw::sim::frame_beats<1>(img.data(), 10, 2)) lb.step(b);
   CHECK(lb.error());
 }

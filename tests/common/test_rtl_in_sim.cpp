@@ -6,11 +6,11 @@
 #include "Vline_buffer_p2.h"
 #include "Vskid_buf.h"
 #include "Vskid_buf_scw_skid_buf.h"
+#include "host/reference/line_buffer_ref.hpp"
 #include "sim/components.hpp"
 #include "sim/elastic.hpp"
 #include "sim/pipeline_shell.hpp"
 #include "sim/rtl_stream.hpp"
-#include "tests/common/line_buffer_ref.hpp"
 #include "tests/common/primitive_configs.hpp"
 
 namespace {
@@ -66,8 +66,9 @@ TEST_CASE("sim clocks RTL and C++ blocks in one chain", "[rtl][sim][pipeline]") 
   std::vector<Out> expected;
   for (int f = 0; f < 3; ++f) {
     const auto img = test::random_image(W, H, 40 + static_cast<std::uint64_t>(f));
-    const auto beats = test::frame_beats<Params::kPpc>(img, W, H);
-    const auto ref = test::line_buffer_reference<Params::kPpc, Params::kRows>(img, W, H);
+    const auto beats = scw::sim::frame_beats<Params::kPpc>(img.data(), W, H);
+    const auto ref =
+        scw::reference::line_buffer_reference<Params::kPpc, Params::kRows>(img.data(), W, H);
     in.insert(in.end(), beats.begin(), beats.end());
     expected.insert(expected.end(), ref.begin(), ref.end());
   }

@@ -3,17 +3,16 @@
 // handshake rules checked every cycle, and the data against an independent expectation.
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
 
-#include <catch2/catch.hpp>
-
-#include "Vfifo_d1_scw_fifo.h"
 #include "Vfifo_d1.h"
-#include "Vfifo_d2_scw_fifo.h"
+#include "Vfifo_d1_scw_fifo.h"
 #include "Vfifo_d2.h"
-#include "Vfifo_d5_scw_fifo.h"
+#include "Vfifo_d2_scw_fifo.h"
 #include "Vfifo_d5.h"
+#include "Vfifo_d5_scw_fifo.h"
 #include "Vline_buffer_p1.h"
 #include "Vline_buffer_p1_scw_line_buffer.h"
 #include "Vline_buffer_p2.h"
@@ -24,11 +23,12 @@
 #include "Vskid_buf_scw_skid_buf.h"
 #include "Vstream_reg.h"
 #include "Vstream_reg_scw_stream_reg.h"
+#include "host/reference/line_buffer_ref.hpp"
 #include "sim/elastic.hpp"
 #include "sim/pipeline_shell.hpp"
+#include "sim/rtl_params.hpp"
 #include "sim/rtl_stream.hpp"
 #include "sim/stream_check.hpp"
-#include "tests/common/line_buffer_ref.hpp"
 #include "tests/common/primitive_configs.hpp"
 
 namespace {
@@ -47,14 +47,9 @@ static_assert(Vfifo_d5_scw_fifo::Depth == test::FifoD5::kDepth &&
 static_assert(Vstream_reg_scw_stream_reg::Width == test::kElasticWidth);
 static_assert(Vskid_buf_scw_skid_buf::Width == test::kElasticWidth);
 
-template <typename VM, typename P>
-constexpr bool line_buffer_params_match() {
-  return VM::Ppc == P::kPpc && VM::MaxWidthPx == P::kMaxWidthPx && VM::Rows == P::kRows &&
-         VM::Latency == P::kLatency;
-}
-static_assert(line_buffer_params_match<Vline_buffer_p1_scw_line_buffer, test::LineBufP1>());
-static_assert(line_buffer_params_match<Vline_buffer_p2_scw_line_buffer, test::LineBufP2>());
-static_assert(line_buffer_params_match<Vline_buffer_p4_scw_line_buffer, test::LineBufP4>());
+static_assert(sim::line_buffer_params_match<Vline_buffer_p1_scw_line_buffer, test::LineBufP1>());
+static_assert(sim::line_buffer_params_match<Vline_buffer_p2_scw_line_buffer, test::LineBufP2>());
+static_assert(sim::line_buffer_params_match<Vline_buffer_p4_scw_line_buffer, test::LineBufP4>());
 
 /// Runs the twin and the RTL under every stall pattern; both must follow the handshake rules,
 /// produce `expected`, and agree cycle by cycle.
@@ -131,18 +126,19 @@ void check_line_buffer() {
   // reads the RAM word the previous beat is writing), full width again.
   std::vector<In> in;
   std::vector<Out> expected;
-  const int sizes[][2] = {{Params::kMaxWidthPx, 7}, {Params::kMaxWidthPx / 2, 5}, {P, 6},
-                          {Params::kMaxWidthPx, 4}};
+  const int sizes[][2] = {
+      {Params::kMaxWidthPx, 7}, {Params::kMaxWidthPx / 2, 5}, {P, 6}, {Params::kMaxWidthPx, 4}};
   std::uint64_t seed = 21;
   for (const auto& wh : sizes) {
     const auto img = test::random_image(wh[0], wh[1], seed++);
-    const auto beats = test::frame_beats<P>(img, wh[0], wh[1]);
+    const auto beats = scw::sim::frame_beats<P>(img.data(), wh[0], wh[1]);
     in.insert(in.end(), beats.begin(), beats.end());
-    const auto ref = test::line_buffer_reference<P, Params::kRows>(img, wh[0], wh[1]);
+    const auto ref =
+        scw::reference::line_buffer_reference<P, Params::kRows>(img.data(), wh[0], wh[1]);
     expected.insert(expected.end(), ref.begin(), ref.end());
   }
-  check_twins([] { return Shell(); }, [] { return sim::RtlStream<VM, In, Out>("line_buffer"); },
-              in, expected);
+  check_twins([] { return Shell(); }, [] { return sim::RtlStream<VM, In, Out>("line_buffer"); }, in,
+              expected);
 }
 
 }  // namespace
@@ -163,15 +159,17 @@ TEST_CASE("scw_line_buffer flags malformed rows and recovers on the next sof",
   constexpr int W = Params::kMaxWidthPx;
 
   auto good = test::random_image(W, 4, 31);
-  const auto good_beats = test::frame_beats<P>(good, W, 4);
-  const auto good_ref = test::line_buffer_reference<P, Params::kRows>(good, W, 4);
+  const auto good_beats = scw::sim::frame_beats<P>(good.data(), W, 4);
+  const auto good_ref = scw::reference::line_buffer_reference<P, Params::kRows>(good.data(), W, 4);
 
   std::vector<In> bad;
   SECTION("a row longer than MaxWidthPx") {
-    bad = test::frame_beats<P>(test::random_image(W + 2 * P, 3, 32), W + 2 * P, 3);
+    const auto img = test::random_image(W + 2 * P, 3, 32);
+    bad = sim::frame_beats<P>(img.data(), W + 2 * P, 3);
   }
   SECTION("a frame cut short mid-row (sof before eol)") {
-    bad = test::frame_beats<P>(test::random_image(W, 3, 33), W, 3);
+    const auto img = test::random_image(W, 3, 33);
+    bad = sim::frame_beats<P>(img.data(), W, 3);
     bad.resize(bad.size() - 3);
   }
   std::vector<In> in = bad;

@@ -20,7 +20,8 @@ TEST_CASE("stage boundaries are stamped with first and last beat in and out", "[
   constexpr int W = 16, H = 3, N = W * H;
   std::vector<In> in;
   for (int f = 0; f < 2; ++f) {
-    const auto b = test::frame_beats<1>(test::random_image(W, H, 7), W, H);
+    const auto img = test::random_image(W, H, 7);
+    const auto b = sim::frame_beats<1>(img.data(), W, H);
     in.insert(in.end(), b.begin(), b.end());
   }
   sim::Simulator s;
@@ -52,14 +53,15 @@ TEST_CASE("stage boundaries are stamped with first and last beat in and out", "[
 }
 
 TEST_CASE("a slow sink fills the FIFO in front of it to its depth", "[sim][occupancy]") {
-  std::vector<In> in = test::frame_beats<1>(test::random_image(16, 4, 3), 16, 4);
+  const auto img = test::random_image(16, 4, 3);
+  std::vector<In> in = sim::frame_beats<1>(img.data(), 16, 4);
   sim::Simulator s;
   auto& a = s.fifo<In>("a", 3);
   auto& b = s.fifo<Out>("b", 5);
   auto& src = s.add<sim::Source<In>>("source", a, in);
   s.add<sim::StreamComponent<Shell>>("line_buffer", Shell(), a, b);
-  auto& sink = s.add<sim::Sink<Out>>("sink", b,
-                                     sim::StallPattern{sim::StallKind::kBackpressure, 0});
+  auto& sink =
+      s.add<sim::Sink<Out>>("sink", b, sim::StallPattern{sim::StallKind::kBackpressure, 0});
   s.run_until([&] { return src.done() && sink.beats().size() == in.size(); }, 10000);
   const auto r = s.report();
   CHECK(r.fifos[0].max_occupancy == 3);
