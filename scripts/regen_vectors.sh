@@ -16,3 +16,14 @@ trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out/common"
 rm -rf "$out/common/line_buffer"
 cp -r "$tmp/line_buffer/vectors" "$out/common/line_buffer"
+
+# rectify/<preset>: 64 x 32 test card shifted, rotated, barrel-undistorted, and a 128 x 96 crop
+# of each bundled chessboard image rectified with the real calibration; the Verilated
+# scw_rectify (P = 2) makes them, checked against the C++ model and the integer reference.
+mkdir -p "$out/rectify"
+for preset in shift rotation barrel chessboard_left chessboard_right; do
+  "$scw" vectors rectify --preset "$preset" --ppc 2 --engine rtl \
+    --data-dir "$root/data/chessboard" --out "$tmp/rectify_$preset" >/dev/null
+  rm -rf "$out/rectify/$preset"
+  cp -r "$tmp/rectify_$preset" "$out/rectify/$preset"
+done

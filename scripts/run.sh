@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # The main job on the bundled data: installs what is missing, builds, and streams the Tsukuba
 # left image through the Verilated line buffer in the cycle simulator (3 frames, P = 2),
-# checking every beat and writing out/stream/report.json and a golden vector set.
+# checking every beat and writing out/stream/report.json and a golden vector set; then
+# rectifies a raw chessboard pair through the fixed-point rectify stage (out/rectify/).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/build.sh" --target scw
@@ -10,3 +11,5 @@ cd "$root"
 ./build/host/cli/scw stream --image data/tsukuba/scene1.row3.col3.ppm --ppc 2 --engine rtl \
   --frames 3 --out-dir out/stream "$@"
 ./build/host/cli/scw vectors verify out/stream/vectors
+./build/host/cli/scw rectify --calib data/chessboard/derived_stereo_calibration_helper.yml \
+  --left data/chessboard/left01.jpg --right data/chessboard/right01.jpg --out-dir out/rectify

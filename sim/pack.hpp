@@ -7,6 +7,7 @@
 
 #include "hls/common/beat.hpp"
 #include "hls/common/line_buffer.hpp"
+#include "hls/rectify/rectify_params.hpp"
 #include "sim/bits.hpp"
 
 namespace scw::sim {
@@ -63,6 +64,40 @@ struct BeatLayout<hls::ColumnBeat<T, P, Rows>> {
       for (int i = 0; i < P; ++i)
         b.rows[k][i] =
             static_cast<T>(w.get(k * kRowBits + i * value_bits<T>(), value_bits<T>()));
+    b.sof = sof;
+    b.eol = eol;
+    return b;
+  }
+  static bool sof(const beat_t& b) { return b.sof; }
+  static bool eol(const beat_t& b) { return b.eol; }
+};
+
+/// Map beats: per pixel {y, x}, each a CoordBits-bit two's-complement number, pixel 0 lowest.
+template <int P, int CB>
+struct BeatLayout<hls::rectify::MapBeat<P, CB>> {
+  using beat_t = hls::rectify::MapBeat<P, CB>;
+  static constexpr int kPointBits = 2 * CB;
+  static constexpr int kPayloadBits = P * kPointBits;
+  static constexpr int kBits = kPayloadBits + 2;
+
+  static Bits payload(const beat_t& b) {
+    constexpr std::uint64_t mask = (std::uint64_t{1} << CB) - 1;
+    Bits w(kPayloadBits);
+    for (int i = 0; i < P; ++i) {
+      w.set(i * kPointBits, CB, static_cast<std::uint64_t>(b.px[i].x) & mask);
+      w.set(i * kPointBits + CB, CB, static_cast<std::uint64_t>(b.px[i].y) & mask);
+    }
+    return w;
+  }
+  static beat_t from_payload(const Bits& w, bool sof, bool eol) {
+    auto sext = [](std::uint64_t v) {
+      return static_cast<std::int32_t>(static_cast<std::int64_t>(v << (64 - CB)) >> (64 - CB));
+    };
+    beat_t b;
+    for (int i = 0; i < P; ++i) {
+      b.px[i].x = sext(w.get(i * kPointBits, CB));
+      b.px[i].y = sext(w.get(i * kPointBits + CB, CB));
+    }
     b.sof = sof;
     b.eol = eol;
     return b;

@@ -2,6 +2,8 @@
 // Compile-time checks that a Verilated model was built with the C++ parameters.
 #pragma once
 
+#include <type_traits>
+
 namespace scw::sim {
 
 /// `VM` is the Verilated scw_line_buffer module class (its /*verilator public*/ parameters are
@@ -11,5 +13,26 @@ constexpr bool line_buffer_params_match() {
   return VM::Ppc == Params::kPpc && VM::MaxWidthPx == Params::kMaxWidthPx &&
          VM::Rows == Params::kRows && VM::Latency == Params::kLatency;
 }
+
+}  // namespace scw::sim
+
+namespace scw::sim {
+
+/// `VM` is a Verilated scw_rectify module class; `Params` an hls::rectify::RectifyParams.
+template <typename VM, typename Params>
+constexpr bool rectify_params_match() {
+  return VM::Ppc == Params::kPpc && VM::MaxWidthPx == Params::kMaxWidthPx &&
+         VM::MaxHeight == Params::kMaxHeight && VM::Rows == Params::kRows &&
+         VM::FracBits == Params::kFracBits && VM::Latency == Params::kLatency &&
+         VM::MapCoordBits == Params::kCoordBits;
+}
+
+}  // namespace scw::sim
+
+namespace scw::sim {
+
+/// Picks the Verilated model built for P pixels per beat: ByPpc<P, Vx_p1, Vx_p2, Vx_p4>.
+template <int P, typename V1, typename V2, typename V4>
+using ByPpc = std::conditional_t<P == 1, V1, std::conditional_t<P == 2, V2, V4>>;
 
 }  // namespace scw::sim

@@ -20,6 +20,13 @@ template <typename M>
 struct has_flag_ports<M, std::void_t<decltype(std::declval<M&>().in_sof_i)>> : std::true_type {};
 }  // namespace detail
 
+/// Reads a stage's out_data_o/out_sof_o/out_eol_o as a beat.
+template <typename Out, typename VM>
+Out read_stage_out(const VM& m) {
+  return BeatLayout<Out>::from_payload(
+      Bits::from_port(m.out_data_o, BeatLayout<Out>::kPayloadBits), m.out_sof_o, m.out_eol_o);
+}
+
 /// Binds the common port shape (in_valid_i/in_ready_o/in_data_i, out_valid_o/out_ready_i/
 /// out_data_o). Modules with in_sof_i/in_eol_i ports (stages) carry the flags on them and the
 /// pixels in *_data; opaque elastic blocks (FIFO, stream register, skid buffer) carry the whole
@@ -50,8 +57,7 @@ class RtlStream {
     o.in_ready = m.in_ready_o;
     o.out_valid = m.out_valid_o;
     if constexpr (detail::has_flag_ports<VM>::value) {
-      o.out = BeatLayout<Out>::from_payload(
-          Bits::from_port(m.out_data_o, BeatLayout<Out>::kPayloadBits), m.out_sof_o, m.out_eol_o);
+      o.out = read_stage_out<Out>(m);
     } else {
       o.out = unpack<Out>(Bits::from_port(m.out_data_o, BeatLayout<Out>::kBits));
     }

@@ -10,7 +10,7 @@ namespace {
 std::string describe(const CycleRecord& r) {
   std::ostringstream s;
   s << "in_valid=" << r.in_valid << " in_ready=" << r.in_ready << " out_valid=" << r.out_valid
-    << " out_ready=" << r.out_ready;
+    << " out_ready=" << r.out_ready << " b_valid=" << r.b_valid << " b_ready=" << r.b_ready;
   if (r.out_valid) s << " out=0x" << r.out.hex();
   return s.str();
 }

@@ -69,10 +69,13 @@ struct CycleRecord {
   bool out_valid = false;
   bool out_ready = false;
   Bits out;  // packed output beat, only when out_valid
+  bool b_valid = false;  // second input of a join (two-input stage); false otherwise
+  bool b_ready = false;
 
   friend bool operator==(const CycleRecord& a, const CycleRecord& b) {
     return a.in_valid == b.in_valid && a.in_ready == b.in_ready && a.out_valid == b.out_valid &&
-           a.out_ready == b.out_ready && (!a.out_valid || a.out == b.out);
+           a.out_ready == b.out_ready && (!a.out_valid || a.out == b.out) &&
+           a.b_valid == b.b_valid && a.b_ready == b.b_ready;
   }
 };
 
@@ -88,6 +91,44 @@ struct RunResult {
 /// Drives `model` with `beats` under `pattern` until `expected_out` beats have come out or
 /// `max_cycles` pass. Every cycle it checks the consumer-visible rules: out_valid and out data
 /// do not depend on out_ready (evaluated both ways), and a stalled output keeps valid and data.
+/// The consumer-side rules, checked once per cycle on a block's output: out_valid and out data
+/// do not depend on out_ready (`lo`/`hi`: evaluated with ready low and high), and a stalled
+/// output keeps valid and data. Records the cycle and collects the beats taken.
+template <typename Out>
+class OutputCheck {
+ public:
+  explicit OutputCheck(RunResult<Out>& r) : r_(r) {}
+
+  template <typename O>
+  void cycle(std::int64_t c, const O& lo, const O& hi, const O& o, bool out_ready,
+             CycleRecord rec) {
+    auto fail = [&](const std::string& what) {
+      std::ostringstream s;
+      s << "cycle " << c << ": " << what;
+      if (r_.violations.size() < 20) r_.violations.push_back(s.str());
+    };
+    if (lo.out_valid != hi.out_valid) fail("out_valid depends on out_ready");
+    if (lo.out_valid && hi.out_valid && pack(lo.out) != pack(hi.out))
+      fail("out data depends on out_ready");
+    rec.out_valid = o.out_valid;
+    rec.out_ready = out_ready;
+    if (o.out_valid) rec.out = pack(o.out);
+    if (prev_stalled_ && !o.out_valid) fail("out_valid dropped while stalled");
+    if (prev_stalled_ && o.out_valid && rec.out != prev_out_) fail("out data changed while stalled");
+    prev_stalled_ = o.out_valid && !out_ready;
+    prev_out_ = rec.out;
+    if (o.out_valid && out_ready) r_.out.push_back(o.out);
+    r_.trace.push_back(std::move(rec));
+  }
+
+ private:
+  RunResult<Out>& r_;
+  bool prev_stalled_ = false;
+  Bits prev_out_;
+};
+
+/// Drives `model` with `beats` under `pattern` until `expected_out` beats have come out or
+/// `max_cycles` pass, checking the handshake rules every cycle (OutputCheck).
 template <typename Model>
 RunResult<typename Model::out_type> run_stream(Model& model,
                                                std::vector<typename Model::in_type> beats,
@@ -97,10 +138,9 @@ RunResult<typename Model::out_type> run_stream(Model& model,
   using In = typename Model::in_type;
   using Out = typename Model::out_type;
   RunResult<Out> r;
+  OutputCheck<Out> check(r);
   StreamDriver<In> drv(std::move(beats), pattern);
   StreamMonitor<Out> mon(pattern);
-  bool prev_stalled = false;
-  Bits prev_out;
   for (std::int64_t c = 0; c < max_cycles; ++c) {
     if (drv.done() && r.out.size() >= expected_out) {
       r.cycles = c;
@@ -112,22 +152,7 @@ RunResult<typename Model::out_type> run_stream(Model& model,
     const auto hi = model.eval(in_valid, in, true);
     const bool out_ready = mon.ready();
     const auto o = model.eval(in_valid, in, out_ready);
-    auto fail = [&](const std::string& what) {
-      std::ostringstream s;
-      s << "cycle " << c << ": " << what;
-      if (r.violations.size() < 20) r.violations.push_back(s.str());
-    };
-    if (lo.out_valid != hi.out_valid) fail("out_valid depends on out_ready");
-    if (lo.out_valid && hi.out_valid && pack(lo.out) != pack(hi.out))
-      fail("out data depends on out_ready");
-    CycleRecord rec{in_valid, o.in_ready, o.out_valid, out_ready, {}};
-    if (o.out_valid) rec.out = pack(o.out);
-    if (prev_stalled && !o.out_valid) fail("out_valid dropped while stalled");
-    if (prev_stalled && o.out_valid && rec.out != prev_out) fail("out data changed while stalled");
-    prev_stalled = o.out_valid && !out_ready;
-    prev_out = rec.out;
-    if (o.out_valid && out_ready) r.out.push_back(o.out);
-    r.trace.push_back(rec);
+    check.cycle(c, lo, hi, o, out_ready, CycleRecord{in_valid, o.in_ready, false, false, {}});
     model.tick();
     drv.clock(in_valid && o.in_ready);
   }

@@ -40,18 +40,8 @@ static_assert(sim::line_buffer_params_match<Vcli_line_buffer_p2_scw_line_buffer,
 static_assert(sim::line_buffer_params_match<Vcli_line_buffer_p4_scw_line_buffer, DemoParams<4>>());
 
 template <int P>
-struct RtlModel;
-template <>
-struct RtlModel<1> {
-  using type = Vcli_line_buffer_p1;
-};
-template <>
-struct RtlModel<2> {
-  using type = Vcli_line_buffer_p2;
-};
-template <>
-struct RtlModel<4> {
-  using type = Vcli_line_buffer_p4;
+struct RtlModel {
+  using type = sim::ByPpc<P, Vcli_line_buffer_p1, Vcli_line_buffer_p2, Vcli_line_buffer_p4>;
 };
 
 struct Options {

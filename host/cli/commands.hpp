@@ -9,5 +9,8 @@ namespace scw::cli {
 void add_info_command(CLI::App& app);
 void add_vectors_command(CLI::App& app);
 void add_stream_command(CLI::App& app);
+void add_rectify_command(CLI::App& app);
+/// `scw vectors rectify`, added under the `vectors` subcommand.
+void add_vectors_rectify_command(CLI::App& vectors);
 
 }  // namespace scw::cli

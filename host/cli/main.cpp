@@ -11,7 +11,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "scw 0.1.0");
   scw::cli::add_info_command(app);
   scw::cli::add_stream_command(app);
+  scw::cli::add_rectify_command(app);
   scw::cli::add_vectors_command(app);
+  scw::cli::add_vectors_rectify_command(*app.get_subcommand("vectors"));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

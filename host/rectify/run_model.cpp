@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: Apache-2.0
+// Whole images through the fixed-point rectify model, one beat per clock, no stalls.
+#include "host/rectify/run_model.hpp"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "sim/frame_beats.hpp"
+#include "sim/rectify_model.hpp"
+
+namespace scw::rectify {
+
+namespace {
+using HostParams = hls::rectify::RectifyParams<1, 2048, 2048, kHostStageRows>;
+}  // namespace
+
+cv::Mat rectify_image(const cv::Mat& raw, const FixedMap& map, int lead_rows) {
+  if (raw.type() != CV_8UC1)
+    throw std::invalid_argument("rectify_image: the raw image must be 8-bit grey (CV_8UC1)");
+  if (raw.cols != map.width || raw.rows != map.height)
+    throw std::invalid_argument(
+        "rectify_image: raw image is " + std::to_string(raw.cols) + "x" +
+        std::to_string(raw.rows) + " but the map is " + std::to_string(map.width) + "x" +
+        std::to_string(map.height) + "; rectify images of the calibration's size");
+  if (map.frac_bits != HostParams::kFracBits)
+    throw std::invalid_argument("rectify_image: the map has " + std::to_string(map.frac_bits) +
+                                " fractional bits, the stage " +
+                                std::to_string(HostParams::kFracBits));
+  if (raw.cols > HostParams::kMaxWidthPx || raw.rows > HostParams::kMaxHeight || raw.cols < 4)
+    throw std::invalid_argument("rectify_image: images must be 4 .. 2048 pixels wide and at most "
+                                "2048 rows high");
+  plan_for_stage({row_window(map)}, HostParams::kRows, "rectify_image");
+  if (lead_rows < 1 || lead_rows > HostParams::kRows - 1)
+    throw std::invalid_argument("rectify_image: lead_rows must be 1 .. " +
+                                std::to_string(HostParams::kRows - 1));
+
+  const cv::Mat img = raw.isContinuous() ? raw : raw.clone();
+  using Model = sim::RectifyModel<HostParams>;
+  const auto model = std::make_unique<Model>(
+      hls::rectify::RectifyConfig{raw.cols, raw.rows, lead_rows});
+  const auto pixels = sim::frame_beats<1>(img.ptr<std::uint8_t>(), img.cols, img.rows);
+  const auto points =
+      sim::frame_beats_of<Model::b_type>(map.points.data(), map.width, map.height);
+
+  cv::Mat out(raw.rows, raw.cols, CV_8UC1);
+  std::size_t a = 0, b = 0, n = 0;
+  const std::size_t total = pixels.size();
+  // Every cycle moves a beat somewhere until the frame is out; the bound only guards bugs.
+  for (std::size_t cycle = 0; n < total; ++cycle) {
+    if (cycle > 4 * total + 100000)
+      throw std::logic_error("rectify_image: the model stopped producing output");
+    const bool av = a < pixels.size(), bv = b < points.size();
+    const auto o = model->eval(av, pixels[av ? a : 0], bv, points[bv ? b : 0], true);
+    if (av && o.a_ready) ++a;
+    if (bv && o.b_ready) ++b;
+    if (o.out_valid) out.data[n++] = o.out.px[0];
+    model->tick();
+  }
+  if (model->kernel().error() != 0)
+    throw std::logic_error("rectify_image: the stage flagged error bits " +
+                           std::to_string(model->kernel().error()));
+  return out;
+}
+
+}  // namespace scw::rectify

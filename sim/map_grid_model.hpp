@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: Apache-2.0
+// The grid map expander clocked as its RTL pipeline (a source: run level in, map stream out),
+// a checked run for source-shaped models, and their simulator component.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "hls/rectify/map_grid.hpp"
+#include "sim/simulator.hpp"
+#include "sim/stream_check.hpp"
+
+namespace scw::sim {
+
+/// One cycle of a knot write port (knot_we_i, knot_addr_i = {row, col}, knot_data_i = {y, x}).
+struct KnotWrite {
+  bool we = false;
+  int col = 0, row = 0;
+  hls::rectify::KnotPoint knot{};
+};
+
+/// A source-shaped cycle model `M` has `out_type` and
+///   StreamOutputs<out_type> eval(bool run, bool out_ready);   // in_ready: a beat issues if run
+///   void drive_knot(const KnotWrite&);                         // this cycle's write port
+///   void tick();
+/// with the meaning of the one-in one-out models (cycle_model.hpp): eval settles and changes
+/// nothing, tick is the clock edge using the inputs of the last eval and drive_knot (the write
+/// port is idle again after the edge).
+///
+/// hls::rectify::MapGrid behind Latency register stages under one enable (adv = !out_valid ||
+/// out_ready), as scw_rectify_map_grid: a beat issues when run && adv, the knot RAMs sample its
+/// address at that edge (before a write at the same edge lands, as block RAM reads old data),
+/// and it is presented Latency cycles later.
+template <typename Params>
+class MapGridModel {
+ public:
+  using Kernel = hls::rectify::MapGrid<Params>;
+  using out_type = typename Kernel::out_type;
+  static constexpr int kLatency = Params::kLatency;
+
+  explicit MapGridModel(const hls::rectify::MapGridConfig& cfg) : k_(cfg) {}
+
+  StreamOutputs<out_type> eval(bool run, bool out_ready) {
+    StreamOutputs<out_type> o;
+    o.out_valid = slots_[kLatency - 1].has_value();
+    if (o.out_valid) o.out = *slots_[kLatency - 1];
+    advance_ = !o.out_valid || out_ready;
+    o.in_ready = advance_;
+    issue_ = run && advance_;
+    return o;
+  }
+  void drive_knot(const KnotWrite& w) { write_ = w; }
+  void tick() {
+    if (advance_) {
+      for (int i = kLatency - 1; i > 0; --i) slots_[i] = slots_[i - 1];
+      slots_[0].reset();
+      if (issue_) slots_[0] = k_.step();  // reads the knots before this edge's write
+    }
+    if (write_.we) k_.write_knot(write_.col, write_.row, write_.knot);
+    write_ = KnotWrite{};
+  }
+
+  Kernel& kernel() { return k_; }
+  const Kernel& kernel() const { return k_; }
+
+ private:
+  Kernel k_;
+  std::array<std::optional<out_type>, kLatency> slots_{};
+  bool advance_ = false, issue_ = false;
+  KnotWrite write_{};
+};
+
+/// Writes every knot of a cols x rows grid (`knot(col, row)`), one per cycle with run low.
+template <typename Model, typename KnotAt>
+void load_knots(Model& m, int cols, int rows, KnotAt knot) {
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i) {
+      m.drive_knot(KnotWrite{true, i, j, knot(i, j)});
+      m.eval(false, true);
+      m.tick();
+    }
+}
+
+/// run_stream for a source: `run` follows the input side of `pattern` (idle cycles drop run),
+/// the sink the output side. Stops after `expected_out` beats are taken; checks the handshake
+/// rules every cycle (OutputCheck). `each_cycle(c, model)`, if given, runs before the cycle's
+/// evaluation (to drive the knot port mid-run). The trace records run as in_valid and "a beat
+/// issues if run" as in_ready.
+template <typename Model>
+RunResult<typename Model::out_type> run_source(
+    Model& model, const StallPattern& pattern, std::size_t expected_out,
+    std::int64_t max_cycles = 1'000'000,
+    const std::function<void(std::int64_t, Model&)>& each_cycle = {}) {
+  using Out = typename Model::out_type;
+  RunResult<Out> r;
+  OutputCheck<Out> check(r);
+  StallGen run_gen(pattern, StallGen::Side::kInput);
+  StreamMonitor<Out> mon(pattern);
+  for (std::int64_t c = 0; c < max_cycles; ++c) {
+    if (r.out.size() >= expected_out) {
+      r.cycles = c;
+      return r;
+    }
+    if (each_cycle) each_cycle(c, model);
+    const bool run = run_gen.next();
+    const auto lo = model.eval(run, false);
+    const auto hi = model.eval(run, true);
+    const bool out_ready = mon.ready();
+    const auto o = model.eval(run, out_ready);
+    check.cycle(c, lo, hi, o, out_ready, CycleRecord{run, o.in_ready, false, false, {}});
+    model.tick();
+  }
+  r.timed_out = true;
+  r.cycles = max_cycles;
+  return r;
+}
+
+/// Puts a source-shaped model in front of a FIFO, running whenever `run` says (default:
+/// always), e.g. the map expander feeding a rectify stage's map FIFO.
+template <typename Model>
+class SourceModelComponent : public Component {
+ public:
+  using Out = typename Model::out_type;
+
+  SourceModelComponent(std::string name, Model model, Fifo<Out>& out,
+                       std::function<bool()> run = {})
+      : Component(std::move(name)), model_(std::move(model)), out_(out), run_(std::move(run)) {
+    connect_out(out_);
+  }
+
+  void eval() override {
+    const bool out_ready = out_.can_push();
+    const auto o = model_.eval(run_ ? run_() : true, out_ready);
+    if (o.out_valid && out_ready) out_.push(o.out);
+  }
+  void tick() override { model_.tick(); }
+
+  Model& model() { return model_; }
+
+ private:
+  Model model_;
+  Fifo<Out>& out_;
+  std::function<bool()> run_;
+};
+
+}  // namespace scw::sim

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: Apache-2.0
+// The Verilated scw_rectify_map_grid as a source-shaped cycle model, interchangeable with
+// sim::MapGridModel (map_grid_model.hpp).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "hls/rectify/map_grid.hpp"
+#include "sim/map_grid_model.hpp"
+#include "sim/pack.hpp"
+#include "sim/rtl_stream.hpp"
+#include "sim/verilated_harness.hpp"
+
+namespace scw::sim {
+
+/// `VM` is a Verilated scw_rectify_map_grid built with `Params` (map_grid_params_match).
+template <typename VM, typename Params>
+class MapGridRtl {
+ public:
+  using out_type = typename Params::map_beat;
+
+  MapGridRtl(const std::string& name, const hls::rectify::MapGridConfig& cfg)
+      : h_(std::make_unique<Harness<VM>>(name)), cfg_(cfg) {
+    drive_static();
+    h_->reset();
+  }
+
+  StreamOutputs<out_type> eval(bool run, bool out_ready) {
+    VM& m = h_->dut();
+    drive_static();
+    m.run_i = run;
+    m.out_ready_i = out_ready;
+    m.eval();
+    StreamOutputs<out_type> o;
+    o.out_valid = m.out_valid_o;
+    o.out = read_stage_out<out_type>(m);
+    o.in_ready = !o.out_valid || out_ready;  // the pipeline enable; a beat issues if run
+    return o;
+  }
+  void drive_knot(const KnotWrite& w) {
+    VM& m = h_->dut();
+    constexpr int kb = Params::kKnotBits;
+    constexpr std::uint64_t mask = (std::uint64_t{1} << kb) - 1;
+    m.knot_we_i = w.we;
+    m.knot_addr_i =
+        static_cast<std::uint32_t>((static_cast<std::uint32_t>(w.row) << Params::kKnotColBits) |
+                                   static_cast<std::uint32_t>(w.col));
+    Bits d(2 * kb);
+    d.set(0, kb, static_cast<std::uint64_t>(static_cast<std::int64_t>(w.knot.x)) & mask);
+    d.set(kb, kb, static_cast<std::uint64_t>(static_cast<std::int64_t>(w.knot.y)) & mask);
+    d.to_port(m.knot_data_i);
+  }
+  void tick() {
+    h_->tick();
+    h_->dut().knot_we_i = 0;
+  }
+
+  Harness<VM>& harness() { return *h_; }
+  VM& dut() { return h_->dut(); }
+
+ private:
+  void drive_static() {
+    VM& m = h_->dut();
+    m.cfg_width_i = static_cast<unsigned>(cfg_.width);
+    m.cfg_height_i = static_cast<unsigned>(cfg_.height);
+  }
+
+  std::unique_ptr<Harness<VM>> h_;
+  hls::rectify::MapGridConfig cfg_;
+};
+
+/// `VM` is a Verilated scw_rectify_map_grid module class; `Params` a MapGridParams.
+template <typename VM, typename Params>
+constexpr bool map_grid_params_match() {
+  return VM::Ppc == Params::kPpc && VM::MaxWidthPx == Params::kMaxWidthPx &&
+         VM::MaxHeight == Params::kMaxHeight && VM::GridLog2 == Params::kGridLog2 &&
+         VM::FracBits == Params::kFracBits && VM::KnotFracBits == Params::kKnotFracBits &&
+         VM::Latency == Params::kLatency && VM::MapCoordBits == Params::kCoordBits &&
+         VM::KnotBits == Params::kKnotBits && VM::KnotColBits == Params::kKnotColBits &&
+         VM::KnotRowBits == Params::kKnotRowBits;
+}
+
+}  // namespace scw::sim
