@@ -15,10 +15,11 @@
 # with chparam, runs `synth_xilinx -flatten -top <module>`, `stat`, and `ltp -noff` with
 # flip-flops, block RAMs and I/O buffers excluded, and prints one line:
 #   <module> [Param=value ...]: LUT=.. FF=.. RAMB18=.. RAMB36=.. DSP=.. LUTRAM=.. SRL=..
-#   logic_levels=.. yosys_s=..
+#   logic_levels=.. logic_levels_dsp_cut=.. yosys_s=..
 # LUT counts LUT1..LUT6 (and LUT6_2), FF counts FD* cells, logic_levels is the longest
 # register-to-register (or port) path in cells (Yosys `ltp`: LUTs, CARRY4s, MUXF7/8 each
-# count one). Environment: YOSYS (default: yosys on PATH). Needs only bash, grep, sed, awk.
+# count one); logic_levels_dsp_cut also cuts paths at DSP48E1s, whose packed pipeline registers
+# ltp cannot see. Environment: YOSYS (default: yosys on PATH). Needs only bash, grep, sed, awk.
 set -euo pipefail
 
 usage() {
@@ -115,6 +116,9 @@ done
     # Xilinx flip-flops are not "FF cell types" to ltp -noff (those are Yosys' internal
     # $_DFF_*), so select them away, with block RAMs (registered) and I/O buffers.
     echo "tee -q -o ltp.txt ltp -noff t:FD* t:RAMB* t:IBUF t:OBUF t:BUFG %u %u %u %u %n"
+    # The same with DSP48E1s cut too: Yosys packs pipeline registers into the DSPs (A/B/P
+    # registers), and ltp walks through a DSP as if it were logic.
+    echo "tee -q -o ltp_dsp.txt ltp -noff t:FD* t:RAMB* t:IBUF t:OBUF t:BUFG t:DSP48E1 %u %u %u %u %u %n"
   fi
 } > "$work/synth.ys"
 
@@ -155,7 +159,11 @@ lutram="$(sum_cells '^RAM[0-9]+(X[0-9]+[SD]|M[0-9]*)$')"
 srl="$(sum_cells '^SRLC?[0-9]+E$')"
 
 levels="n/a"
+levels_dsp="n/a"
 if [[ $run_ltp -eq 1 ]]; then
+  levels_dsp="$(sed -n 's/.*Longest topological path.*(length=\([0-9]*\)).*/\1/p' \
+    "$work/ltp_dsp.txt" | head -n 1)"
+  [[ -n "$levels_dsp" ]] || levels_dsp="0"
   levels="$(sed -n 's/.*Longest topological path.*(length=\([0-9]*\)).*/\1/p' "$work/ltp.txt" \
     | head -n 1)"
   [[ -n "$levels" ]] || levels="0"
@@ -170,7 +178,8 @@ if [[ $show_cells -eq 1 || $expect_bram -eq 1 ]]; then
   printf '%s\n' "$cells" | awk '{ printf "  %-12s %8d\n", $1, $2 }'
 fi
 echo "${label}: LUT=${lut} FF=${ff} RAMB18=${ramb18} RAMB36=${ramb36} DSP=${dsp}" \
-  "LUTRAM=${lutram} SRL=${srl} logic_levels=${levels} yosys_s=${secs}"
+  "LUTRAM=${lutram} SRL=${srl} logic_levels=${levels} logic_levels_dsp_cut=${levels_dsp}" \
+  "yosys_s=${secs}"
 
 if [[ $expect_bram -eq 1 ]]; then
   fail=""

@@ -17,7 +17,9 @@
 // Pipeline under one enable (adv = !out_valid || out_ready), Latency = 4:
 //   s0 decode taps, window check, RAM addresses -> s1 RAM words -> s2 horizontal blends
 //   a = f00 S + (f10 - f00) fx, b likewise -> out  (a S + (b - a) fy + S^2/2) >> 2F.
-// Geometry comes from cfg_*; sof/eol are checked, never trusted. A sof in mid-frame is held:
+// cfg_* are static: set them before rst_ni rises (they are registered without reset, and the
+// first clock after reset already uses them). Geometry comes from cfg_*; sof/eol are checked,
+// never trusted. A sof in mid-frame is held:
 // the writer marks the rest of its frame written (no data), the reader emits zeros for the
 // rest of its frame, and both start the next frame with the held beat. A beat that should
 // start a frame but has no sof is dropped. err_o (sticky): [0] raw stream geometry,
@@ -91,6 +93,24 @@ module scw_rectify #(
     $error("scw_rectify: need MaxWidthPx %% (4 Ppc) == 0 and Rows a power of two >= 4");
   end
 
+  // ---- configuration ---------------------------------------------------------------------
+  // cfg_* are static: registered here (no reset, so they settle while rst_ni is low) together
+  // with the values derived from them, which keeps them off every timing path.
+  logic [WW-1:0] width_q;
+  logic [HW-1:0] height_q, last_row_q;
+  logic [SlotW-1:0] lead_q;
+  logic [SlotW+2:0] wr_limit_q;
+  logic [CmpW-1:0] need_first;  // min(D, H): the first row of a frame
+  always_ff @(posedge clk_i) begin
+    width_q    <= cfg_width_i;
+    height_q   <= cfg_height_i;
+    lead_q     <= cfg_lead_i;
+    last_row_q <= cfg_height_i - 1'b1;
+    wr_limit_q <= (SlotW + 3)'(cfg_lead_i) + 1'b1;
+    need_first <= (CmpW'(cfg_lead_i) < CmpW'(cfg_height_i)) ? CmpW'(cfg_lead_i)
+                                                            : CmpW'(cfg_height_i);
+  end
+
   // ---- shared ----------------------------------------------------------------------------
   logic adv, pending;
   logic out_valid_q;
@@ -102,7 +122,7 @@ module scw_rectify #(
 
   assign adv      = !out_valid_q || out_ready_i;
   assign pending  = s0_valid_q && s0_eol_q;
-  assign cols_cfg = cfg_width_i >> PpcLog;
+  assign cols_cfg = width_q >> PpcLog;
   assign last_col = ColW'(cols_cfg - 1'b1);
   assign err_o    = err_q;
 
@@ -116,7 +136,9 @@ module scw_rectify #(
   logic err_raw;
   logic [BeatW-1:0] wr_data;
 
-  assign wr_ok      = ({1'b0, avail_q} + (AvW + 1)'(pending)) <= ((AvW + 1)'(cfg_lead_i) + 1'b1);
+  // avail + pending <= D + 1, as two compares against registers and a select (no adder).
+  assign wr_ok      = pending ? ((AvW + 1)'(avail_q) <= (AvW + 1)'(lead_q))
+                              : ((AvW + 1)'(avail_q) <= wr_limit_q);
   assign raw_fs     = (in_row_q == '0) && (in_col_q == '0);
   assign in_ready_o = !skip_q && !rheld_q && wr_ok;
   assign raw_take   = in_valid_i && in_ready_o;
@@ -164,7 +186,7 @@ module scw_rectify #(
       if (row_done) begin
         in_col_q  <= '0;
         in_slot_q <= in_slot_q + 1'b1;
-        if (in_row_q == cfg_height_i - 1'b1) begin
+        if (in_row_q == last_row_q) begin
           in_row_q <= '0;
           skip_q   <= 1'b0;
         end else begin
@@ -212,13 +234,19 @@ module scw_rectify #(
   logic [MapW-1:0] mheld_data_q;
   logic allowed, out_fs, out_last, map_take, go, emit, zero, mheld_set, mheld_clr;
   logic fill_set, err_map, md_eol;
-  logic [HW-1:0] rows_left;
-  logic [CmpW-1:0] need;
+  logic [HW-1:0] rows_left, left_q, left_next;
+  logic [CmpW-1:0] need, need_q, need_next;
   logic [MapW-1:0] md;
   logic [Ppc-1:0] lane_winerr;
 
-  assign rows_left   = cfg_height_i - out_row_q;
-  assign need        = (CmpW'(cfg_lead_i) < CmpW'(rows_left)) ? CmpW'(cfg_lead_i) : CmpW'(rows_left);
+  // need = min(D, H - v), kept in registers so the handshake does not wait for a subtract
+  // and a compare: left_q counts the rows left in the frame (0 = a frame starts, H rows), and
+  // need_q is computed for the next row while the current one streams.
+  assign rows_left   = (left_q == '0) ? height_q : left_q;
+  assign left_next   = rows_left - 1'b1;
+  assign need_next   = (CmpW'(lead_q) < CmpW'(left_next)) ? CmpW'(lead_q)
+                                                               : CmpW'(left_next);
+  assign need        = (left_q == '0) ? need_first : need_q;
   assign allowed     = CmpW'(avail_q) >= need;
   assign out_fs      = (out_row_q == '0) && (out_col_q == '0);
   assign out_last    = out_col_q == last_col;
@@ -264,6 +292,8 @@ module scw_rectify #(
       out_col_q  <= '0;
       out_row_q  <= '0;
       out_slot_q <= '0;
+      left_q     <= '0;
+      need_q     <= '0;
       fill_q     <= 1'b0;
       mheld_q    <= 1'b0;
       avail_q    <= '0;
@@ -273,7 +303,9 @@ module scw_rectify #(
         if (out_last) begin
           out_col_q  <= '0;
           out_slot_q <= out_slot_q + 1'b1;
-          if (out_row_q == cfg_height_i - 1'b1) begin
+          left_q     <= left_next;
+          need_q     <= need_next;
+          if (out_row_q == last_row_q) begin
             out_row_q <= '0;
             fill_q    <= 1'b0;
           end else begin
@@ -288,7 +320,7 @@ module scw_rectify #(
       else if (mheld_clr) mheld_q <= 1'b0;
       avail_q <= avail_q + AvW'(row_done) - AvW'(emit && out_last);
       // The window check is flagged from stage 0, a cycle after its beat was taken.
-      err_q <= err_q | {s0_valid_q && s0_winerr_q, err_map, err_raw};
+      err_q <= err_q | {s0_valid_q && (|s0_winerr_q), err_map, err_raw};
     end
   end
 
@@ -300,7 +332,7 @@ module scw_rectify #(
   end
 
   // ---- pipeline control ------------------------------------------------------------------
-  logic s0_winerr_q;
+  logic [Ppc-1:0] s0_winerr_q;  // per lane, ORed a stage later
   logic s0_sof_q, s0_zero_q, s1_valid_q, s1_sof_q, s1_eol_q;
   logic s2_valid_q, s2_sof_q, s2_eol_q, out_sof_q, out_eol_q;
   logic [BeatW-1:0] out_pix, out_data_q;
@@ -324,7 +356,7 @@ module scw_rectify #(
       s0_sof_q   <= out_fs;
       s0_eol_q   <= out_last;
       s0_zero_q  <= zero;
-      s0_winerr_q <= emit && !zero && (|lane_winerr);
+      s0_winerr_q <= (emit && !zero) ? lane_winerr : '0;
       s1_sof_q   <= s0_sof_q;
       s1_eol_q   <= s0_eol_q;
       s2_sof_q   <= s1_sof_q;
@@ -345,17 +377,23 @@ module scw_rectify #(
   localparam int unsigned VW = AW + FracBits + 2;    // signed vertical blend before the shift
   localparam logic signed [VW-1:0] Half = VW'(1) <<< (2 * FracBits - 1);
 
-  logic signed [DW-1:0] width_s, height_s, lo_s, hi_s, row_s;
-  assign width_s  = $signed(DW'(cfg_width_i));
-  assign height_s = $signed(DW'(cfg_height_i));
-  assign lo_s     = $signed(DW'(cfg_lead_i)) - $signed(DW'(Rows)) + $signed(DW'(2));
-  assign hi_s     = $signed(DW'(cfg_lead_i)) - $signed(DW'(1));
+  // Window bounds for row y0 (lo_s .. hi_s) and for row y0 + 1 expressed on dy = y0 - v
+  // (lo1_s .. hi1_s), so the lanes compare dy without a second adder in the path.
+  logic signed [DW-1:0] width_s, height_s, lo_s, hi_s, lo1_s, hi1_s, row_s;
+  always_ff @(posedge clk_i) begin
+    width_s  <= $signed(DW'(cfg_width_i));
+    height_s <= $signed(DW'(cfg_height_i));
+    lo_s     <= $signed(DW'(cfg_lead_i)) - $signed(DW'(Rows)) + $signed(DW'(2));
+    hi_s     <= $signed(DW'(cfg_lead_i)) - $signed(DW'(1));
+    lo1_s    <= $signed(DW'(cfg_lead_i)) - $signed(DW'(Rows)) + $signed(DW'(1));
+    hi1_s    <= $signed(DW'(cfg_lead_i)) - $signed(DW'(2));
+  end
   assign row_s    = $signed(DW'(out_row_q));
 
   for (genvar l = 0; l < Ppc; l++) begin : gen_lane
     // -- s0: decode ------------------------------------------------------------------------
     logic signed [IntW-1:0] x0i, y0i;
-    logic signed [DW-1:0] x0, x1, y0, y1, dy, dy1;
+    logic signed [DW-1:0] x0, x1, y0, y1, dy;
     logic [FracBits-1:0] fx, fy;
     logic col0, col1, any_col, row0, row1, use0, use1, p, q;
     logic [SlotW-1:0] slot0, slot1;
@@ -370,7 +408,6 @@ module scw_rectify #(
     assign x1  = x0 + $signed(DW'(1));
     assign y1  = y0 + $signed(DW'(1));
     assign dy  = y0 - row_s;
-    assign dy1 = dy + $signed(DW'(1));
 
     assign col0    = (x0 >= 0) && (x0 < width_s);
     assign col1    = (fx != '0) && (x1 >= 0) && (x1 < width_s);
@@ -378,7 +415,7 @@ module scw_rectify #(
     assign row0    = any_col && (y0 >= 0) && (y0 < height_s);
     assign row1    = any_col && (fy != '0) && (y1 >= 0) && (y1 < height_s);
     assign use0    = row0 && (dy >= lo_s) && (dy <= hi_s);
-    assign use1    = row1 && (dy1 >= lo_s) && (dy1 <= hi_s);
+    assign use1    = row1 && (dy >= lo1_s) && (dy <= hi1_s);
     assign lane_winerr[l] = (row0 && !use0) || (row1 && !use1);
 
     assign slot0 = out_slot_q + dy[SlotW-1:0];
