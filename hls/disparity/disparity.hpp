@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: Apache-2.0
+// Disparity kernel: SAD block matching with incremental column sums, all candidates per beat.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "hls/common/beat.hpp"
+#include "hls/disparity/disparity_params.hpp"
+
+namespace scw::hls::disparity {
+
+/// SAD of one candidate over the window: at most N * N * 255 (Q17.0 at N = 21).
+using sad_t = std::uint32_t;
+
+/// The winner of one pixel's candidates and the rejection rules (architecture 4.2), a pure
+/// function of the N x N SADs of the NumDisp candidates; shared by the streaming kernel and
+/// its RTL twin's checks, not by the direct reference (host/reference/disparity_ref.hpp).
+template <int NumDisp>
+disp_t decide(const std::array<sad_t, NumDisp>& sad, const DisparityConfig& cfg) {
+  int best = 0;
+  for (int d = 1; d < NumDisp; ++d)
+    if (sad[d] < sad[best]) best = d;  // strict <: the smallest d wins ties
+  const sad_t min_sad = sad[best];
+  if (cfg.sad_limit > 0 && min_sad > static_cast<sad_t>(cfg.sad_limit)) return invalid_code(cfg);
+  if (cfg.uniqueness_ratio > 0) {
+    const sad_t thresh = min_sad + min_sad * static_cast<sad_t>(cfg.uniqueness_ratio) / 100;
+    for (int d = 0; d < NumDisp; ++d)
+      if ((d < best - 1 || d > best + 1) && sad[d] <= thresh) return invalid_code(cfg);
+  }
+  return static_cast<disp_t>((cfg.dmin + best) * 16);
+}
+
+/// The streaming kernel: one pair of beats (left, right; P pixels of the same row) per call.
+///
+/// Frame-relative row y and column x of the newest pixel. N + 1 rows of each image are kept
+/// (the row leaving the window, y - N, is read while row y is written); per candidate d and
+/// column x the column sum C_d(x) = sum over rows y - N + 1 .. y of |L(x) - R(x - dmin - d)| is
+/// updated by adding the new row's difference and subtracting the leaving row's; the window
+/// sum for centre column x - r is the running S_d += C_d(x) - C_d(x - N). So each beat does
+/// 2 P NumDisp absolute differences and 2 P NumDisp additions, whatever N is.
+///
+/// The result for output pixel (u, v) = (x - r, y - r) is pushed into `results` when v is in
+/// the valid rows r .. H - r - 1 and u < W - r; every other output pixel is the invalid code,
+/// which the reader (sim::DisparityModel, and the RTL) emits without waiting for input.
+template <typename Params>
+class DisparityCore {
+ public:
+  static constexpr int P = Params::kPpc;
+  static constexpr int N = Params::kWindow;
+  static constexpr int R = Params::kRadius;
+  static constexpr int ND = Params::kNumDisp;
+  static constexpr int W = Params::kMaxWidthPx;
+  using pixel_beat = typename Params::pixel_beat;
+
+  explicit DisparityCore(const DisparityConfig& cfg = {}) : cfg_(cfg) {}
+  const DisparityConfig& config() const { return cfg_; }
+
+  /// Processes the beat at (x0, y); calls `emit(disp_t)` once per result pixel, in raster
+  /// order of the output pixels they belong to.
+  template <typename Emit>
+  void step(int x0, int y, const pixel_beat& l, const pixel_beat& r, Emit&& emit) {
+    // clang-format off
+#pragma HLS INLINE
+    // clang-format on
+    const int slot = y % (N + 1);
+    const int old_slot = (y + 1) % (N + 1);  // row y - N
+    for (int i = 0; i < P; ++i) {
+      left_[slot][x0 + i] = l.px[i];
+      right_[slot][x0 + i] = r.px[i];
+    }
+    for (int i = 0; i < P; ++i) {
+      const int x = x0 + i;
+      for (int d = 0; d < ND; ++d) {
+        const int xr = x - cfg_.dmin - d;
+        int c = 0;
+        if (xr >= 0) {
+          c = col_[d][x] + absdiff(left_[slot][x], right_[slot][xr]);
+          if (y >= N) c -= absdiff(left_[old_slot][x], right_[old_slot][xr]);
+          if (y == 0) c = absdiff(left_[slot][x], right_[slot][xr]);
+        }
+        col_[d][x] = static_cast<std::uint16_t>(c);
+        const sad_t leaving = x >= N ? col_[d][x - N] : 0;
+        win_[d] = (x == 0 ? 0 : win_[d]) + static_cast<sad_t>(c) - leaving;
+      }
+      const int u = x - R, v = y - R;
+      if (u < 0 || v < R) continue;
+      const bool valid = u >= cfg_.dmin + ND - 1 + R;
+      emit(valid ? decide<ND>(win_, cfg_) : invalid_code(cfg_));
+    }
+  }
+
+ private:
+  static int absdiff(int a, int b) { return a > b ? a - b : b - a; }
+
+  DisparityConfig cfg_;
+  std::array<std::array<pixel_t, W>, N + 1> left_{};
+  std::array<std::array<pixel_t, W>, N + 1> right_{};
+  std::array<std::array<std::uint16_t, W>, ND> col_{};  // Q16.0, at most N * 255
+  std::array<sad_t, ND> win_{};
+};
+
+/// The stage around the core, the body of an II=1 loop (one clock() per clock cycle), twin of
+/// the RTL's control: a writer takes one left and one right beat together and feeds the core;
+/// results wait in a small queue; a reader emits the output frame in raster order, results
+/// where the core computes them and the invalid code everywhere else (the top and bottom R
+/// rows, the last R columns), so that the bottom rows of a frame leave while the next frame's
+/// first rows come in: one beat per clock in steady state, no flush.
+///
+/// Geometry comes from the configuration; sof/eol are checked, never trusted (sticky error()).
+/// A sof in the middle of a frame is held while the writer feeds the rest of the interrupted
+/// frame as zero pixels, one beat per clock, so the output stays whole frames and the next
+/// frame is exact; a beat that should start a frame but has no sof is dropped.
+template <typename Params>
+class Disparity {
+ public:
+  static constexpr int P = Params::kPpc;
+  static constexpr int R = Params::kRadius;
+  /// Result queue: the writer needs room for P results, the reader takes up to P.
+  static constexpr int kQueue = 4 * P;
+  using in_type = typename Params::pixel_beat;
+  using out_type = typename Params::disp_beat;
+
+  struct Emit {
+    bool valid = false;
+    out_type beat{};
+  };
+
+  explicit Disparity(const DisparityConfig& cfg = {}) : cfg_(cfg), core_(cfg) {}
+  const DisparityConfig& config() const { return cfg_; }
+  bool error() const { return error_; }
+
+  /// Both inputs are taken together, only when both are valid.
+  bool in_ready(bool l_valid, bool r_valid) const {
+    return !skip_ && !held_ && l_valid && r_valid && kQueue - count_ >= P;
+  }
+  /// Whether the reader can emit its next beat (given that the output advances).
+  bool read_allowed() const {
+    if (out_x_ == 0 && out_y_ == 0 && frames_in_ == frames_out_) return false;  // not started
+    return count_ >= computed_lanes();
+  }
+
+  /// One clock edge: `take` = a beat pair was accepted; `advance` = the output moves.
+  Emit clock(bool take, const in_type& l, const in_type& r, bool advance) {
+    // clang-format off
+#pragma HLS INLINE
+    // clang-format on
+    Emit e;
+    if (advance && read_allowed()) e = read_beat();
+    if (take) {
+      if (l.sof != r.sof || l.eol != r.eol) error_ = true;
+      const bool frame_start = in_x_ == 0 && in_y_ == 0;
+      if (l.sof && !frame_start) {
+        error_ = true;
+        held_ = true;
+        held_l_ = l;
+        held_r_ = r;
+        skip_ = true;
+      } else if (!l.sof && frame_start) {
+        error_ = true;  // dropped: a frame starts with sof
+      } else {
+        write_beat(l, r);
+      }
+    } else if (skip_ && kQueue - count_ >= P) {
+      write_beat(in_type{}, in_type{});  // the rest of an interrupted frame, as zeros
+    } else if (held_ && kQueue - count_ >= P) {
+      held_ = false;
+      write_beat(held_l_, held_r_);
+    }
+    return e;
+  }
+
+ private:
+  int cols() const { return cfg_.width / P; }
+
+  void write_beat(const in_type& l, const in_type& r) {
+    const bool frame_start = in_x_ == 0 && in_y_ == 0;
+    if (frame_start) ++frames_in_;
+    const bool last = in_x_ == cols() - 1;
+    if (!skip_ && l.eol != last) error_ = true;
+    core_.step(in_x_ * P, in_y_, l, r, [this](disp_t v) {
+      queue_[(head_ + count_) % kQueue] = v;
+      ++count_;
+    });
+    if (!last) {
+      ++in_x_;
+      return;
+    }
+    in_x_ = 0;
+    if (++in_y_ == cfg_.height) {
+      in_y_ = 0;
+      skip_ = false;
+    }
+  }
+
+  bool computed(int u, int v) const {
+    return v >= R && v < cfg_.height - R && u < cfg_.width - R;
+  }
+  int computed_lanes() const {
+    int n = 0;
+    for (int i = 0; i < P; ++i) n += computed(out_x_ * P + i, out_y_) ? 1 : 0;
+    return n;
+  }
+
+  Emit read_beat() {
+    Emit e;
+    e.valid = true;
+    const bool frame_start = out_x_ == 0 && out_y_ == 0;
+    if (frame_start) ++frames_out_;
+    for (int i = 0; i < P; ++i) {
+      if (computed(out_x_ * P + i, out_y_)) {
+        e.beat.px[i] = queue_[head_];
+        head_ = (head_ + 1) % kQueue;
+        --count_;
+      } else {
+        e.beat.px[i] = invalid_code(cfg_);
+      }
+    }
+    e.beat.sof = frame_start;
+    e.beat.eol = out_x_ == cols() - 1;
+    if (!e.beat.eol) {
+      ++out_x_;
+    } else {
+      out_x_ = 0;
+      if (++out_y_ == cfg_.height) out_y_ = 0;
+    }
+    return e;
+  }
+
+  DisparityConfig cfg_;
+  DisparityCore<Params> core_;
+  std::array<disp_t, kQueue> queue_{};
+  int head_ = 0, count_ = 0;
+  int in_x_ = 0, in_y_ = 0, out_x_ = 0, out_y_ = 0;
+  unsigned frames_in_ = 0, frames_out_ = 0;
+  bool skip_ = false, held_ = false, error_ = false;
+  in_type held_l_{}, held_r_{};
+};
+
+}  // namespace scw::hls::disparity

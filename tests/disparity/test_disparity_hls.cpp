@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: Apache-2.0
+// The streaming disparity model against the direct reference (a fresh N x N SAD per pixel and
+// candidate), pixel for pixel, on random images and on Tsukuba; frames back to back.
+#include <catch2/catch.hpp>
+#include <memory>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "host/reference/disparity_ref.hpp"
+#include "sim/disparity_model.hpp"
+#include "sim/frame_beats.hpp"
+
+namespace {
+
+using namespace scw;
+using hls::disparity::DisparityConfig;
+
+struct Pair {
+  std::vector<std::uint8_t> left, right;
+};
+
+/// A right image of noise and a left image that sees it shifted by a piecewise-constant
+/// disparity field inside [dmin, dmin + nd), with 10 % of the pixels replaced by noise (so
+/// minima are not all unique and ties and rejections happen).
+Pair random_pair(int w, int h, int dmin, int nd, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  Pair p{std::vector<std::uint8_t>(static_cast<std::size_t>(w * h)),
+         std::vector<std::uint8_t>(static_cast<std::size_t>(w * h))};
+  for (auto& v : p.right) v = static_cast<std::uint8_t>(rng() % 64 * 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int s = dmin + (x / 7 + y / 5) % nd;
+      auto& l = p.left[static_cast<std::size_t>(y * w + x)];
+      l = x >= s ? p.right[static_cast<std::size_t>(y * w + x - s)] : static_cast<std::uint8_t>(rng());
+      if (rng() % 10 == 0) l = static_cast<std::uint8_t>(rng());
+    }
+  return p;
+}
+
+/// Frames back to back through the model (no stalls); every output frame must equal the
+/// reference of its own pair.
+template <typename Params>
+void check(const std::vector<Pair>& frames, int w, int h, const DisparityConfig& cfg) {
+  constexpr int P = Params::kPpc;
+  std::vector<typename Params::pixel_beat> l, r;
+  for (const auto& f : frames) {
+    const auto bl = sim::frame_beats<P>(f.left.data(), w, h);
+    const auto br = sim::frame_beats<P>(f.right.data(), w, h);
+    l.insert(l.end(), bl.begin(), bl.end());
+    r.insert(r.end(), br.begin(), br.end());
+  }
+  auto model = std::make_unique<sim::DisparityModel<Params>>(cfg);
+  const auto run = sim::run_join(*model, l, r, {}, l.size(), 100'000'000);
+  REQUIRE_FALSE(run.timed_out);
+  REQUIRE(run.violations.empty());
+  CHECK_FALSE(model->kernel().error());
+  const std::size_t per_frame = l.size() / frames.size();
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const auto ref = reference::disparity_reference(frames[f].left.data(), frames[f].right.data(),
+                                                    w, h, Params::kWindow, Params::kNumDisp, cfg);
+    std::vector<std::uint16_t> got;
+    for (std::size_t i = f * per_frame; i < (f + 1) * per_frame; ++i)
+      got.insert(got.end(), run.out[i].px.begin(), run.out[i].px.end());
+    std::size_t diff = 0;
+    for (std::size_t i = 0; i < got.size(); ++i) diff += got[i] != ref[i] ? 1 : 0;
+    INFO("frame " << f << ": " << diff << " of " << got.size() << " pixels differ");
+    CHECK(diff == 0);
+  }
+}
+
+Pair tsukuba(int x, int y, int w, int h) {
+  const std::string dir = SCW_DATA_DIR "/tsukuba/";
+  cv::Mat l = cv::imread(dir + "scene1.row3.col3.ppm", cv::IMREAD_GRAYSCALE);
+  cv::Mat r = cv::imread(dir + "scene1.row3.col4.ppm", cv::IMREAD_GRAYSCALE);
+  REQUIRE_FALSE(l.empty());
+  REQUIRE_FALSE(r.empty());
+  const cv::Rect roi(x, y, w, h);
+  const cv::Mat lc = l(roi).clone(), rc = r(roi).clone();
+  return {std::vector<std::uint8_t>(lc.datastart, lc.dataend),
+          std::vector<std::uint8_t>(rc.datastart, rc.dataend)};
+}
+
+}  // namespace
+
+TEST_CASE("disparity model equals the direct reference (thesis mode)", "[disparity][hls]") {
+  SECTION("P = 1, N = 5, d 2..9, random pairs") {
+    auto cfg = hls::disparity::thesis_mode(64, 24, 2);
+    check<hls::disparity::DisparityParams<1, 64, 5, 8>>(
+        {random_pair(64, 24, 2, 8, 1), random_pair(64, 24, 2, 8, 2), random_pair(64, 24, 2, 8, 3)},
+        64, 24, cfg);
+  }
+  SECTION("P = 2, N = 7, d 0..15, SAD limit and uniqueness") {
+    auto cfg = hls::disparity::thesis_mode(96, 32, 0);
+    cfg.sad_limit = 2500;
+    cfg.uniqueness_ratio = 15;
+    check<hls::disparity::DisparityParams<2, 96, 7, 16>>(
+        {random_pair(96, 32, 0, 16, 4), random_pair(96, 32, 0, 16, 5)}, 96, 32, cfg);
+  }
+  SECTION("P = 4, N = 9, d 3..18") {
+    auto cfg = hls::disparity::thesis_mode(80, 28, 3);
+    check<hls::disparity::DisparityParams<4, 80, 9, 16>>({random_pair(80, 28, 3, 16, 6)}, 80, 28,
+                                                         cfg);
+  }
+  SECTION("the thesis's (21, 20, 64), P = 1 and P = 2, random and a Tsukuba crop") {
+    auto cfg = hls::disparity::thesis_mode(128, 40, 20);
+    check<hls::disparity::DisparityParams<1, 128, 21, 45>>(
+        {random_pair(128, 40, 20, 45, 7), tsukuba(100, 100, 128, 40)}, 128, 40, cfg);
+    check<hls::disparity::DisparityParams<2, 128, 21, 45>>({random_pair(128, 40, 20, 45, 8)}, 128,
+                                                           40, cfg);
+  }
+  SECTION("Tsukuba, whole image, N = 9 and 15, d 0..15") {
+    const Pair t = tsukuba(0, 0, 384, 288);
+    check<hls::disparity::DisparityParams<2, 384, 9, 16>>({t}, 384, 288,
+                                                          hls::disparity::thesis_mode(384, 288, 0));
+    check<hls::disparity::DisparityParams<1, 384, 15, 16>>({t}, 384, 288,
+                                                           hls::disparity::thesis_mode(384, 288, 0));
+  }
+}
+
+TEST_CASE("disparity runs one beat per clock across frames", "[disparity][hls][cycles]") {
+  // Exact cycle counts: K frames back to back are taken in K * H * W/P cycles, one pair of beats
+  // per clock, and the output ends when the reader has emitted what follows the last computed
+  // pixel: the rest of its row (ceil(R/P) beats) and the bottom R rows (invalid codes, emitted
+  // without input), plus the output register and the cycle that takes the last beat. No cycle
+  // is lost between frames: the bottom rows of a frame leave while the next frame comes in.
+  using Params = hls::disparity::DisparityParams<2, 64, 7, 8>;
+  constexpr int W = 64, H = 20, K = 3, R = Params::kRadius, P = Params::kPpc;
+  std::vector<Pair> frames;
+  for (int f = 0; f < K; ++f) frames.push_back(random_pair(W, H, 1, 8, 40 + f));
+  std::vector<Params::pixel_beat> l, r;
+  for (const auto& f : frames) {
+    const auto bl = sim::frame_beats<P>(f.left.data(), W, H);
+    const auto br = sim::frame_beats<P>(f.right.data(), W, H);
+    l.insert(l.end(), bl.begin(), bl.end());
+    r.insert(r.end(), br.begin(), br.end());
+  }
+  sim::DisparityModel<Params> model(hls::disparity::thesis_mode(W, H, 1));
+  const auto run = sim::run_join(model, l, r, {}, l.size());
+  REQUIRE_FALSE(run.timed_out);
+  std::int64_t last_take = -1;
+  for (std::size_t c = 0; c < run.trace.size(); ++c)
+    if (run.trace[c].in_valid && run.trace[c].in_ready) last_take = static_cast<std::int64_t>(c);
+  CHECK(last_take == K * H * W / P - 1);
+  CHECK(run.cycles == K * H * W / P + R * W / P + (R + P - 1) / P + 2);
+}
