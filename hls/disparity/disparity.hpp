@@ -7,28 +7,38 @@
 
 #include "hls/common/beat.hpp"
 #include "hls/disparity/disparity_params.hpp"
+#include "hls/disparity/prefilter.hpp"
 
 namespace scw::hls::disparity {
 
 /// SAD of one candidate over the window: at most N * N * 255 (Q17.0 at N = 21).
 using sad_t = std::uint32_t;
 
-/// The winner of one pixel's candidates and the rejection rules (architecture 4.2), a pure
-/// function of the N x N SADs of the NumDisp candidates; shared by the streaming kernel and
-/// its RTL twin's checks, not by the direct reference (host/reference/disparity_ref.hpp).
+/// The winner of one pixel's candidates, the rejection rules and the value (docs/disparity.md),
+/// a pure function of the N x N SADs of the NumDisp candidates and the window's texture sum;
+/// used by the streaming kernel, not by the direct reference (host/reference/disparity_ref.hpp).
 template <int NumDisp>
-disp_t decide(const std::array<sad_t, NumDisp>& sad, const DisparityConfig& cfg) {
+disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const DisparityConfig& cfg) {
   int best = 0;
   for (int d = 1; d < NumDisp; ++d)
     if (sad[d] < sad[best]) best = d;  // strict <: the smallest d wins ties
-  const sad_t min_sad = sad[best];
-  if (cfg.sad_limit > 0 && min_sad > static_cast<sad_t>(cfg.sad_limit)) return invalid_code(cfg);
+  const sad_t m = sad[best];
+  if (cfg.sad_limit > 0 && m > static_cast<sad_t>(cfg.sad_limit)) return invalid_code(cfg);
+  if (cfg.texture_threshold > 0 && texture < static_cast<sad_t>(cfg.texture_threshold))
+    return invalid_code(cfg);
   if (cfg.uniqueness_ratio > 0) {
-    const sad_t thresh = min_sad + min_sad * static_cast<sad_t>(cfg.uniqueness_ratio) / 100;
+    const sad_t thresh = m + m * static_cast<sad_t>(cfg.uniqueness_ratio) / 100;
     for (int d = 0; d < NumDisp; ++d)
       if ((d < best - 1 || d > best + 1) && sad[d] <= thresh) return invalid_code(cfg);
   }
-  return static_cast<disp_t>((cfg.dmin + best) * 16);
+  const int d = cfg.dmin + best;
+  if (!cfg.subpixel || best == 0 || best == NumDisp - 1) return static_cast<disp_t>(d * 16);
+  // StereoBM's fit: den >= 0, |frac| <= 128; floor division by 16 via an arithmetic shift.
+  const int prev = static_cast<int>(sad[best - 1]), next = static_cast<int>(sad[best + 1]);
+  const int diff = prev - next;
+  const int den = prev + next - 2 * static_cast<int>(m) + (diff < 0 ? -diff : diff);
+  const int frac = den != 0 ? diff * 256 / den : 0;
+  return static_cast<disp_t>(static_cast<std::int16_t>((d * 256 + frac + 15) >> 4));
 }
 
 /// The streaming kernel: one pair of beats (left, right; P pixels of the same row) per call.
@@ -83,10 +93,16 @@ class DisparityCore {
         const sad_t leaving = x >= N ? col_[d][x - N] : 0;
         win_[d] = (x == 0 ? 0 : win_[d]) + static_cast<sad_t>(c) - leaving;
       }
+      // Texture: the same column and window sums of |L - cap| (StereoBM's texture measure).
+      int t = absdiff(left_[slot][x], cfg_.prefilter_cap);
+      if (y > 0) t += tcol_[x];
+      if (y >= N) t -= absdiff(left_[old_slot][x], cfg_.prefilter_cap);
+      tcol_[x] = static_cast<std::uint16_t>(t);
+      twin_ = (x == 0 ? 0 : twin_) + static_cast<sad_t>(t) - (x >= N ? tcol_[x - N] : 0);
       const int u = x - R, v = y - R;
       if (u < 0 || v < R) continue;
       const bool valid = u >= cfg_.dmin + ND - 1 + R;
-      emit(valid ? decide<ND>(win_, cfg_) : invalid_code(cfg_));
+      emit(valid ? decide<ND>(win_, twin_, cfg_) : invalid_code(cfg_));
     }
   }
 
@@ -98,6 +114,8 @@ class DisparityCore {
   std::array<std::array<pixel_t, W>, N + 1> right_{};
   std::array<std::array<std::uint16_t, W>, ND> col_{};  // Q16.0, at most N * 255
   std::array<sad_t, ND> win_{};
+  std::array<std::uint16_t, W> tcol_{};  // texture column sums, at most N * 255
+  sad_t twin_ = 0;
 };
 
 /// The stage around the core, the body of an II=1 loop (one clock() per clock cycle), twin of
@@ -105,7 +123,8 @@ class DisparityCore {
 /// results wait in a small queue; a reader emits the output frame in raster order, results
 /// where the core computes them and the invalid code everywhere else (the top and bottom R
 /// rows, the last R columns), so that the bottom rows of a frame leave while the next frame's
-/// first rows come in: one beat per clock in steady state, no flush.
+/// first rows come in: one beat per clock in steady state, no flush. With cfg.prefilter both
+/// images pass an XSobel kernel first (two rows later, still one beat per clock).
 ///
 /// Geometry comes from the configuration; sof/eol are checked, never trusted (sticky error()).
 /// A sof in the middle of a frame is held while the writer feeds the rest of the interrupted
@@ -126,13 +145,16 @@ class Disparity {
     out_type beat{};
   };
 
-  explicit Disparity(const DisparityConfig& cfg = {}) : cfg_(cfg), core_(cfg) {}
+  explicit Disparity(const DisparityConfig& cfg = {}) : cfg_(cfg), core_(cfg) {
+    xs_l_.configure(cfg.width, cfg.height, cfg.prefilter_cap);
+    xs_r_.configure(cfg.width, cfg.height, cfg.prefilter_cap);
+  }
   const DisparityConfig& config() const { return cfg_; }
   bool error() const { return error_; }
 
   /// Both inputs are taken together, only when both are valid.
   bool in_ready(bool l_valid, bool r_valid) const {
-    return !skip_ && !held_ && l_valid && r_valid && kQueue - count_ >= P;
+    return !skip_ && !held_ && l_valid && r_valid && input_room();
   }
   /// Whether the reader can emit its next beat (given that the output advances).
   bool read_allowed() const {
@@ -141,12 +163,17 @@ class Disparity {
   }
 
   /// One clock edge: `take` = a beat pair was accepted; `advance` = the output moves.
+  /// Readers act before writers (read-first, as block RAM).
   Emit clock(bool take, const in_type& l, const in_type& r, bool advance) {
     // clang-format off
 #pragma HLS INLINE
     // clang-format on
     Emit e;
     if (advance && read_allowed()) e = read_beat();
+    // The raw pair entering this clock, if any: taken, a zero pair of an interrupted frame,
+    // or the held first pair of the next frame.
+    bool have = false;
+    in_type bl{}, br{};
     if (take) {
       if (l.sof != r.sof || l.eol != r.eol) error_ = true;
       const bool frame_start = in_x_ == 0 && in_y_ == 0;
@@ -159,38 +186,60 @@ class Disparity {
       } else if (!l.sof && frame_start) {
         error_ = true;  // dropped: a frame starts with sof
       } else {
-        write_beat(l, r);
+        if (l.eol != (in_x_ == cols() - 1)) error_ = true;
+        have = true;
+        bl = l;
+        br = r;
       }
-    } else if (skip_ && kQueue - count_ >= P) {
-      write_beat(in_type{}, in_type{});  // the rest of an interrupted frame, as zeros
-    } else if (held_ && kQueue - count_ >= P) {
+    } else if (skip_ && input_room()) {
+      have = true;  // the rest of an interrupted frame, as zeros
+    } else if (held_ && input_room()) {
       held_ = false;
-      write_beat(held_l_, held_r_);
+      have = true;
+      bl = held_l_;
+      br = held_r_;
+    }
+    if (have) advance_input();
+    if (!cfg_.prefilter) {
+      if (have) write_core(bl, br);
+      return e;
+    }
+    if (xs_l_.read_allowed() && core_room()) {
+      const in_type pl = xs_l_.read();
+      write_core(pl, xs_r_.read());
+    }
+    if (have) {
+      xs_l_.write(bl);
+      xs_r_.write(br);
     }
     return e;
   }
 
  private:
   int cols() const { return cfg_.width / P; }
+  bool core_room() const { return kQueue - count_ >= P; }
+  bool input_room() const { return cfg_.prefilter ? xs_l_.write_allowed() : core_room(); }
 
-  void write_beat(const in_type& l, const in_type& r) {
-    const bool frame_start = in_x_ == 0 && in_y_ == 0;
-    if (frame_start) ++frames_in_;
-    const bool last = in_x_ == cols() - 1;
-    if (!skip_ && l.eol != last) error_ = true;
-    core_.step(in_x_ * P, in_y_, l, r, [this](disp_t v) {
-      queue_[(head_ + count_) % kQueue] = v;
-      ++count_;
-    });
-    if (!last) {
-      ++in_x_;
-      return;
-    }
+  /// Counts the raw frame position (for the sof/eol checks and the resynchronisation).
+  void advance_input() {
+    if (++in_x_ < cols()) return;
     in_x_ = 0;
     if (++in_y_ == cfg_.height) {
       in_y_ = 0;
       skip_ = false;
     }
+  }
+
+  /// Feeds the core the next beat pair of its own frame raster (raw or prefiltered).
+  void write_core(const in_type& l, const in_type& r) {
+    if (core_x_ == 0 && core_y_ == 0) ++frames_in_;
+    core_.step(core_x_ * P, core_y_, l, r, [this](disp_t v) {
+      queue_[(head_ + count_) % kQueue] = v;
+      ++count_;
+    });
+    if (++core_x_ < cols()) return;
+    core_x_ = 0;
+    if (++core_y_ == cfg_.height) core_y_ = 0;
   }
 
   bool computed(int u, int v) const {
@@ -231,7 +280,8 @@ class Disparity {
   DisparityCore<Params> core_;
   std::array<disp_t, kQueue> queue_{};
   int head_ = 0, count_ = 0;
-  int in_x_ = 0, in_y_ = 0, out_x_ = 0, out_y_ = 0;
+  XSobel<Params> xs_l_, xs_r_;
+  int in_x_ = 0, in_y_ = 0, core_x_ = 0, core_y_ = 0, out_x_ = 0, out_y_ = 0;
   unsigned frames_in_ = 0, frames_out_ = 0;
   bool skip_ = false, held_ = false, error_ = false;
   in_type held_l_{}, held_r_{};

@@ -118,6 +118,33 @@ TEST_CASE("disparity model equals the direct reference (thesis mode)", "[dispari
   }
 }
 
+TEST_CASE("disparity model equals the direct reference (opencv mode)", "[disparity][hls]") {
+  SECTION("P = 1, N = 5, d 0..15, random pairs, odd height") {
+    check<hls::disparity::DisparityParams<1, 64, 5, 16>>(
+        {random_pair(64, 25, 0, 16, 11), random_pair(64, 25, 0, 16, 12)}, 64, 25,
+        hls::disparity::opencv_mode(64, 25, 0));
+  }
+  SECTION("P = 2, N = 9, d 4..19, cap 63, texture 30, uniqueness 5") {
+    check<hls::disparity::DisparityParams<2, 96, 9, 16>>(
+        {random_pair(96, 32, 4, 16, 13), random_pair(96, 32, 4, 16, 14)}, 96, 32,
+        hls::disparity::opencv_mode(96, 32, 4, 63, 30, 5));
+  }
+  SECTION("P = 4, N = 7, d 1..16") {
+    check<hls::disparity::DisparityParams<4, 80, 7, 16>>({random_pair(80, 27, 1, 16, 15)}, 80, 27,
+                                                         hls::disparity::opencv_mode(80, 27, 1));
+  }
+  SECTION("Tsukuba, whole image, N = 9 and 21, d 0..15, and the thesis's (21, 20, 64) on a crop") {
+    const Pair t = tsukuba(0, 0, 384, 288);
+    check<hls::disparity::DisparityParams<2, 384, 9, 16>>({t}, 384, 288,
+                                                          hls::disparity::opencv_mode(384, 288, 0));
+    check<hls::disparity::DisparityParams<1, 384, 21, 16>>(
+        {t}, 384, 288, hls::disparity::opencv_mode(384, 288, 0));
+    check<hls::disparity::DisparityParams<1, 128, 21, 45>>(
+        {tsukuba(100, 100, 128, 40), random_pair(128, 40, 20, 45, 16)}, 128, 40,
+        hls::disparity::opencv_mode(128, 40, 20));
+  }
+}
+
 TEST_CASE("disparity runs one beat per clock across frames", "[disparity][hls][cycles]") {
   // Exact cycle counts: K frames back to back are taken in K * H * W/P cycles, one pair of beats
   // per clock, and the output ends when the reader has emitted what follows the last computed
@@ -135,12 +162,20 @@ TEST_CASE("disparity runs one beat per clock across frames", "[disparity][hls][c
     l.insert(l.end(), bl.begin(), bl.end());
     r.insert(r.end(), br.begin(), br.end());
   }
-  sim::DisparityModel<Params> model(hls::disparity::thesis_mode(W, H, 1));
-  const auto run = sim::run_join(model, l, r, {}, l.size());
-  REQUIRE_FALSE(run.timed_out);
-  std::int64_t last_take = -1;
-  for (std::size_t c = 0; c < run.trace.size(); ++c)
-    if (run.trace[c].in_valid && run.trace[c].in_ready) last_take = static_cast<std::int64_t>(c);
-  CHECK(last_take == K * H * W / P - 1);
-  CHECK(run.cycles == K * H * W / P + R * W / P + (R + P - 1) / P + 2);
+  // The prefilter (opencv mode) delays the core by two rows: its output row v needs input row
+  // v + 1 complete, so it leaves while input row v + 2 comes in.
+  for (const bool opencv : {false, true}) {
+    DYNAMIC_SECTION((opencv ? "opencv mode" : "thesis mode")) {
+      sim::DisparityModel<Params> model(opencv ? hls::disparity::opencv_mode(W, H, 1)
+                                               : hls::disparity::thesis_mode(W, H, 1));
+      const auto run = sim::run_join(model, l, r, {}, l.size());
+      REQUIRE_FALSE(run.timed_out);
+      std::int64_t last_take = -1;
+      for (std::size_t c = 0; c < run.trace.size(); ++c)
+        if (run.trace[c].in_valid && run.trace[c].in_ready) last_take = static_cast<std::int64_t>(c);
+      CHECK(last_take == K * H * W / P - 1);
+      CHECK(run.cycles ==
+            K * H * W / P + (R + (opencv ? 2 : 0)) * W / P + (R + P - 1) / P + 2);
+    }
+  }
 }
