@@ -27,3 +27,14 @@ for preset in shift rotation barrel chessboard_left chessboard_right; do
   rm -rf "$out/rectify/$preset"
   cp -r "$tmp/rectify_$preset" "$out/rectify/$preset"
 done
+
+# disparity/<preset>: a 64 x 24 random texture pair with known shifts (N = 5, d 0..15, thesis
+# mode) and a 96 x 48 Tsukuba crop (N = 9, d 0..15, opencv mode), P = 2, from the C++ model,
+# checked against the direct reference (the RTL replay comes with the RTL).
+mkdir -p "$out/disparity"
+for preset in texture tsukuba; do
+  "$scw" vectors disparity --preset "$preset" --data-dir "$root/data/tsukuba" \
+    --out "$tmp/disparity_$preset" >/dev/null
+  rm -rf "$out/disparity/$preset"
+  cp -r "$tmp/disparity_$preset" "$out/disparity/$preset"
+done

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,6 +66,36 @@ RunResult<typename Model::out_type> run_join(Model& model, std::vector<typename 
   r.timed_out = true;
   r.cycles = max_cycles;
   return r;
+}
+
+/// Streams `a` and `b` through a join model as fast as it takes them (no stalls, output always
+/// ready, no checks or trace: the whole-image runners' loop) until `expected_out` beats are out.
+/// Throws std::logic_error if the model stops producing output. `cycles` gets the cycle count.
+template <typename Model>
+std::vector<typename Model::out_type> drain_join(Model& model,
+                                                 const std::vector<typename Model::a_type>& a,
+                                                 const std::vector<typename Model::b_type>& b,
+                                                 std::size_t expected_out,
+                                                 std::int64_t* cycles = nullptr) {
+  std::vector<typename Model::out_type> out;
+  out.reserve(expected_out);
+  std::size_t ia = 0, ib = 0;
+  std::int64_t c = 0;
+  const auto limit = static_cast<std::int64_t>(4 * (a.size() + b.size() + expected_out)) + 100000;
+  for (; out.size() < expected_out; ++c) {
+    if (c > limit)
+      throw std::logic_error("drain_join: the model stopped producing output (" +
+                             std::to_string(out.size()) + " of " + std::to_string(expected_out) +
+                             " beats)");
+    const bool av = ia < a.size(), bv = ib < b.size();
+    const auto o = model.eval(av, a[av ? ia : 0], bv, b[bv ? ib : 0], true);
+    if (av && o.a_ready) ++ia;
+    if (bv && o.b_ready) ++ib;
+    if (o.out_valid) out.push_back(o.out);
+    model.tick();
+  }
+  if (cycles != nullptr) *cycles = c;
+  return out;
 }
 
 /// Puts a join model between two input FIFOs and one output FIFO.

@@ -10,7 +10,10 @@ void add_info_command(CLI::App& app);
 void add_vectors_command(CLI::App& app);
 void add_stream_command(CLI::App& app);
 void add_rectify_command(CLI::App& app);
+void add_disparity_command(CLI::App& app);
 /// `scw vectors rectify`, added under the `vectors` subcommand.
 void add_vectors_rectify_command(CLI::App& vectors);
+/// `scw vectors disparity`, added under the `vectors` subcommand.
+void add_vectors_disparity_command(CLI::App& vectors);
 
 }  // namespace scw::cli

@@ -43,20 +43,9 @@ cv::Mat rectify_image(const cv::Mat& raw, const FixedMap& map, int lead_rows) {
   const auto points =
       sim::frame_beats_of<Model::b_type>(map.points.data(), map.width, map.height);
 
+  const auto beats = sim::drain_join(*model, pixels, points, pixels.size());
   cv::Mat out(raw.rows, raw.cols, CV_8UC1);
-  std::size_t a = 0, b = 0, n = 0;
-  const std::size_t total = pixels.size();
-  // Every cycle moves a beat somewhere until the frame is out; the bound only guards bugs.
-  for (std::size_t cycle = 0; n < total; ++cycle) {
-    if (cycle > 4 * total + 100000)
-      throw std::logic_error("rectify_image: the model stopped producing output");
-    const bool av = a < pixels.size(), bv = b < points.size();
-    const auto o = model->eval(av, pixels[av ? a : 0], bv, points[bv ? b : 0], true);
-    if (av && o.a_ready) ++a;
-    if (bv && o.b_ready) ++b;
-    if (o.out_valid) out.data[n++] = o.out.px[0];
-    model->tick();
-  }
+  for (std::size_t n = 0; n < beats.size(); ++n) out.data[n] = beats[n].px[0];
   if (model->kernel().error() != 0)
     throw std::logic_error("rectify_image: the stage flagged error bits " +
                            std::to_string(model->kernel().error()));

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: Apache-2.0
+// Whole images through the disparity model: one built stage per (window, candidate count).
+#include "host/disparity/run_model.hpp"
+
+#include <algorithm>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <utility>
+
+#include "sim/frame_beats.hpp"
+
+namespace scw::disparity {
+
+namespace {
+
+// The built windows and counts as template packs; they must list kHostWindows / kHostNumDisps.
+using Windows = std::integer_sequence<int, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23>;
+using NumDisps = std::integer_sequence<int, 16, 32, 45, 48, 64, 96, 128>;
+
+template <int... V, std::size_t K>
+constexpr bool same(std::integer_sequence<int, V...>, const std::array<int, K>& a) {
+  if (sizeof...(V) != K) return false;
+  const int v[] = {V...};
+  for (std::size_t i = 0; i < K; ++i)
+    if (v[i] != a[i]) return false;
+  return true;
+}
+static_assert(same(Windows{}, kHostWindows) && same(NumDisps{}, kHostNumDisps));
+
+using Runner = cv::Mat (*)(const cv::Mat&, const cv::Mat&, const DisparityConfig&);
+
+template <int N, int ND>
+cv::Mat run_built(const cv::Mat& left, const cv::Mat& right, const DisparityConfig& cfg) {
+  using Params = hls::disparity::DisparityParams<1, kHostMaxWidthPx, N, ND>;
+  const auto l = sim::frame_beats<1>(left.ptr<std::uint8_t>(), cfg.width, cfg.height);
+  const auto r = sim::frame_beats<1>(right.ptr<std::uint8_t>(), cfg.width, cfg.height);
+  const auto beats = run_disparity_model<Params>(l, r, cfg);
+  cv::Mat out(cfg.height, cfg.width, CV_16SC1);
+  auto* dst = out.ptr<std::uint16_t>();
+  for (std::size_t i = 0; i < beats.size(); ++i) dst[i] = beats[i].px[0];
+  return out;
+}
+
+template <int ND, int... N>
+Runner find_window(int n, std::integer_sequence<int, N...>) {
+  Runner f = nullptr;
+  ((n == N ? (f = &run_built<N, ND>, 0) : 0), ...);
+  return f;
+}
+
+template <int... ND>
+Runner find(int n, int nd, std::integer_sequence<int, ND...>) {
+  Runner f = nullptr;
+  ((nd == ND ? (f = find_window<ND>(n, Windows{}), 0) : 0), ...);
+  return f;
+}
+
+template <std::size_t K>
+std::string list(const std::array<int, K>& a) {
+  std::string s;
+  for (std::size_t i = 0; i < K; ++i)
+    s += (i ? (i + 1 == K ? " or " : ", ") : "") + std::to_string(a[i]);
+  return s;
+}
+
+void fail(const std::string& what) { throw std::invalid_argument("disparity_image: " + what); }
+
+std::string size_text(const cv::Mat& m) {
+  return std::to_string(m.cols) + " x " + std::to_string(m.rows);
+}
+
+}  // namespace
+
+cv::Mat read_grey_image(const std::string& path) {
+  cv::Mat img = cv::imread(path, cv::IMREAD_UNCHANGED);
+  if (img.empty())
+    throw std::runtime_error("cannot read '" + path + "' as an image (PNG, JPEG, PGM, ...)");
+  if (img.depth() != CV_8U)
+    throw std::runtime_error("'" + path + "' has " + std::to_string(img.elemSize1() * 8) +
+                             "-bit samples; the disparity stage takes 8-bit images");
+  if (img.channels() == 3) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
+  if (img.channels() == 4) cv::cvtColor(img, img, cv::COLOR_BGRA2GRAY);
+  if (img.channels() != 1)
+    throw std::runtime_error("'" + path + "' has " + std::to_string(img.channels()) +
+                             " channels; give a grey or colour image");
+  return img;
+}
+
+const char* mode_name(Mode m) { return m == Mode::thesis ? "thesis" : "opencv"; }
+
+DisparityConfig mode_config(Mode m, int width, int height, int dmin) {
+  return m == Mode::thesis ? hls::disparity::thesis_mode(width, height, dmin)
+                           : hls::disparity::opencv_mode(width, height, dmin);
+}
+
+cv::Mat disparity_image(const cv::Mat& left, const cv::Mat& right, int window_n, int dmin, int dmax,
+                        const DisparityConfig& options) {
+  if (left.empty() || right.empty()) fail("an input image is empty");
+  if (left.type() != CV_8UC1 || right.type() != CV_8UC1)
+    fail("the images must be 8-bit grey (CV_8UC1); convert colour images first");
+  if (left.size() != right.size())
+    fail("the left image is " + size_text(left) + " px but the right one " + size_text(right) +
+         " px; a stereo pair must have one size");
+  if (window_n % 2 == 0 || window_n < 1)
+    fail("the window must be odd (N x N around the pixel), got " + std::to_string(window_n));
+  if (std::find(kHostWindows.begin(), kHostWindows.end(), window_n) == kHostWindows.end())
+    fail("window " + std::to_string(window_n) +
+         " is not built; supported windows: " + list(kHostWindows));
+  if (left.cols < window_n || left.rows < window_n)
+    fail("the images (" + size_text(left) + " px) are smaller than the " +
+         std::to_string(window_n) + " x " + std::to_string(window_n) + " window");
+  if (left.cols > kHostMaxWidthPx)
+    fail("the images are " + std::to_string(left.cols) +
+         " px wide; the built stage takes at most " + std::to_string(kHostMaxWidthPx));
+  if (dmax < dmin)
+    fail("the largest disparity " + std::to_string(dmax) + " is below the smallest " +
+         std::to_string(dmin));
+  if (dmin < 0)
+    fail("the smallest disparity is " + std::to_string(dmin) +
+         "; the streaming stage takes dmin >= 0 (it matches the right image only to the left "
+         "of the newest pixel)");
+  const int count = dmax - dmin + 1;
+  const Runner run = find(window_n, count, NumDisps{});
+  if (!run)
+    fail("the range " + std::to_string(dmin) + " .. " + std::to_string(dmax) + " has " +
+         std::to_string(count) + " candidates; the built stages evaluate exactly " +
+         list(kHostNumDisps) + " (choose dmax = dmin + count - 1)");
+  if (options.prefilter_cap < 1 || options.prefilter_cap > 63)
+    fail("the prefilter cap must be 1 .. 63, got " + std::to_string(options.prefilter_cap));
+  if (options.sad_limit < 0 || options.texture_threshold < 0 || options.uniqueness_ratio < 0)
+    fail("the SAD limit, texture threshold and uniqueness ratio must be >= 0 (0 = off)");
+
+  DisparityConfig cfg = options;
+  cfg.width = left.cols;
+  cfg.height = left.rows;
+  cfg.dmin = dmin;
+  const cv::Mat l = left.isContinuous() ? left : left.clone();
+  const cv::Mat r = right.isContinuous() ? right : right.clone();
+  return run(l, r, cfg);
+}
+
+}  // namespace scw::disparity
