@@ -44,7 +44,7 @@
 #include "sim/rectify_rtl.hpp"
 #include "sim/rtl_params.hpp"
 #include "sim/simulator.hpp"
-#include "tests/rectify/random_maps.hpp"
+#include "host/rectify/test_maps.hpp"
 
 namespace {
 
@@ -97,7 +97,7 @@ rectify::FixedMap bench_map(const Options& o, int frac_bits) {
       const double ru = c * (u - cx) - s * (v - cy), rv = s * (u - cx) + c * (v - cy);
       const double f = 1.0 + o.k1 * (ru * ru + rv * rv) / r2n;
       m.points[static_cast<std::size_t>(v) * w + u] =
-          test::quantise_point(cx + ru * f + o.shift_x, cy + rv * f + o.shift_y, w, h, frac_bits);
+          rectify::quantise_point(cx + ru * f + o.shift_x, cy + rv * f + o.shift_y, w, h, frac_bits);
     }
   return m;
 }

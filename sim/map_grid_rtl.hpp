@@ -29,7 +29,6 @@ class MapGridRtl {
 
   StreamOutputs<out_type> eval(bool run, bool out_ready) {
     VM& m = h_->dut();
-    drive_static();
     m.run_i = run;
     m.out_ready_i = out_ready;
     m.eval();

@@ -43,8 +43,8 @@ namespace scw::sim {
   }
 
 /// Binds a module with two input groups (named by `Ports`) and out_valid_o/out_ready_i/
-/// out_data_o/out_sof_o/out_eol_o. `configure` sets the module's static cfg_* inputs; it runs
-/// before reset and again before every evaluation, so they are stable throughout.
+/// out_data_o/out_sof_o/out_eol_o. `configure` sets the module's static cfg_* inputs once,
+/// before reset; Verilator keeps input values, so they stay stable throughout.
 template <typename VM, typename A, typename B, typename Out, typename Ports>
 class RtlJoin {
  public:
@@ -53,14 +53,13 @@ class RtlJoin {
   using out_type = Out;
 
   RtlJoin(const std::string& name, std::function<void(VM&)> configure)
-      : h_(std::make_unique<Harness<VM>>(name)), configure_(std::move(configure)) {
-    configure_(h_->dut());
+      : h_(std::make_unique<Harness<VM>>(name)) {
+    configure(h_->dut());
     h_->reset();
   }
 
   JoinOutputs<Out> eval(bool a_valid, const A& a, bool b_valid, const B& b, bool out_ready) {
     VM& m = h_->dut();
-    configure_(m);
     Ports::drive_a(m, a_valid, BeatLayout<A>::payload(a), BeatLayout<A>::sof(a),
                    BeatLayout<A>::eol(a));
     Ports::drive_b(m, b_valid, BeatLayout<B>::payload(b), BeatLayout<B>::sof(b),
@@ -81,7 +80,6 @@ class RtlJoin {
 
  private:
   std::unique_ptr<Harness<VM>> h_;
-  std::function<void(VM&)> configure_;
 };
 
 }  // namespace scw::sim

@@ -5,7 +5,7 @@
 //   disparity_eval [--tsukuba DIR] [--urban LEFT.pgm RIGHT.pgm NUMDISP] [--list K]
 //
 // Without options: Tsukuba from SCW_DATA_DIR/tsukuba. --urban adds an agreement run on a
-// further grey pair (e.g. /work/shared/data/karlsruhe_urban, which is not committable) at
+// further grey pair (e.g. the Karlsruhe urban pair, which may not be redistributed) at
 // windows 21 and 9, minDisparity 0. --list K prints up to K differing pixels per comparison.
 #include <algorithm>
 #include <chrono>

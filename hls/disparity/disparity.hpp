@@ -19,8 +19,9 @@ using sad_t = std::uint32_t;
 /// used by the streaming kernel, not by the direct reference (host/reference/disparity_ref.hpp).
 template <int NumDisp>
 disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const DisparityConfig& cfg) {
+  const int n = candidates<NumDisp>(cfg);  // the first n of the built candidates
   int best = 0;
-  for (int d = 1; d < NumDisp; ++d)
+  for (int d = 1; d < n; ++d)
     if (sad[d] < sad[best]) best = d;  // strict <: the smallest d wins ties
   const sad_t m = sad[best];
   if (cfg.sad_limit > 0 && m > static_cast<sad_t>(cfg.sad_limit)) return invalid_code(cfg);
@@ -28,11 +29,11 @@ disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const Dispar
     return invalid_code(cfg);
   if (cfg.uniqueness_ratio > 0) {
     const sad_t thresh = m + m * static_cast<sad_t>(cfg.uniqueness_ratio) / 100;
-    for (int d = 0; d < NumDisp; ++d)
+    for (int d = 0; d < n; ++d)
       if ((d < best - 1 || d > best + 1) && sad[d] <= thresh) return invalid_code(cfg);
   }
   const int d = cfg.dmin + best;
-  if (!cfg.subpixel || best == 0 || best == NumDisp - 1) return static_cast<disp_t>(d * 16);
+  if (!cfg.subpixel || best == 0 || best == n - 1) return static_cast<disp_t>(d * 16);
   // StereoBM's fit: den >= 0, |frac| <= 128; floor division by 16 via an arithmetic shift.
   const int prev = static_cast<int>(sad[best - 1]), next = static_cast<int>(sad[best + 1]);
   const int diff = prev - next;
@@ -63,7 +64,8 @@ class DisparityCore {
   static constexpr int W = Params::kMaxWidthPx;
   using pixel_beat = typename Params::pixel_beat;
 
-  explicit DisparityCore(const DisparityConfig& cfg = {}) : cfg_(cfg) {}
+  explicit DisparityCore(const DisparityConfig& cfg = {})
+      : cfg_(cfg), nd_(candidates<ND>(cfg)) {}
   const DisparityConfig& config() const { return cfg_; }
 
   /// Processes the beat at (x0, y); calls `emit(disp_t)` once per result pixel, in raster
@@ -81,7 +83,7 @@ class DisparityCore {
     }
     for (int i = 0; i < P; ++i) {
       const int x = x0 + i;
-      for (int d = 0; d < ND; ++d) {
+      for (int d = 0; d < nd_; ++d) {  // the hardware evaluates all ND; unused ones idle
         const int xr = x - cfg_.dmin - d;
         int c = 0;
         if (xr >= 0) {
@@ -101,7 +103,7 @@ class DisparityCore {
       twin_ = (x == 0 ? 0 : twin_) + static_cast<sad_t>(t) - (x >= N ? tcol_[x - N] : 0);
       const int u = x - R, v = y - R;
       if (u < 0 || v < R) continue;
-      const bool valid = u >= cfg_.dmin + ND - 1 + R;
+      const bool valid = u >= cfg_.dmin + nd_ - 1 + R;
       emit(valid ? decide<ND>(win_, twin_, cfg_) : invalid_code(cfg_));
     }
   }
@@ -110,6 +112,7 @@ class DisparityCore {
   static int absdiff(int a, int b) { return a > b ? a - b : b - a; }
 
   DisparityConfig cfg_;
+  int nd_;  // candidates in use, candidates<ND>(cfg_)
   std::array<std::array<pixel_t, W>, N + 1> left_{};
   std::array<std::array<pixel_t, W>, N + 1> right_{};
   std::array<std::array<std::uint16_t, W>, ND> col_{};  // Q16.0, at most N * 255

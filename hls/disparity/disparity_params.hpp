@@ -14,7 +14,8 @@ namespace scw::hls::disparity {
 using disp_t = std::uint16_t;
 
 /// Built-in structure of one stage: the SAD window N x N (N odd; N rows of line buffer) and the
-/// number of candidates evaluated in parallel (DMax = DMin + NumDisp - 1, DMin at run time).
+/// number of candidates evaluated in parallel; dmin and how many of them are used
+/// (DisparityConfig::num_disp) are set at run time.
 template <int P, int MaxWidthPx, int N, int NumDisp>
 struct DisparityParams {
   static constexpr int kPpc = P;
@@ -36,7 +37,9 @@ struct DisparityParams {
 struct DisparityConfig {
   int width = 0;              // pixels, multiple of P
   int height = 0;             // rows
-  int dmin = 0;               // smallest candidate (minDisparity); DMax = dmin + NumDisp - 1
+  int dmin = 0;               // smallest candidate (minDisparity), >= 0
+  int num_disp = 0;           // candidates dmin .. dmin + num_disp - 1, 1 .. NumDisp (the built
+                              // parallelism); 0 = all NumDisp. DMax = dmin + candidates - 1
   bool prefilter = false;     // x-Sobel prefilter with cap (StereoBM PREFILTER_XSOBEL)
   int prefilter_cap = 31;     // 1 .. 63
   int sad_limit = 0;          // > 0: reject when the minimum SAD exceeds it
@@ -46,6 +49,12 @@ struct DisparityConfig {
   bool subpixel = false;      // 4-bit sub-pixel fraction (StereoBM's parabola-like fit)
   bool opencv_invalid = false;  // invalid code (dmin - 1) * 16 as StereoBM, else 0
 };
+
+/// The number of candidates a stage built for NumDisp evaluates under `c`.
+template <int NumDisp>
+constexpr int candidates(const DisparityConfig& c) {
+  return c.num_disp > 0 && c.num_disp < NumDisp ? c.num_disp : NumDisp;
+}
 
 /// The code of an invalid pixel.
 constexpr disp_t invalid_code(const DisparityConfig& c) {

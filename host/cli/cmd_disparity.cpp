@@ -118,11 +118,9 @@ void add_disparity_command(CLI::App& app) {
       "disparity",
       "SAD block-matching disparity of a rectified pair with the disparity stage's streaming "
       "model (P = 1)");
-  std::string windows, counts;
+  std::string windows;
   for (const int n : disparity::kHostWindows)
     windows += (windows.empty() ? "" : ", ") + std::to_string(n);
-  for (const int n : disparity::kHostNumDisps)
-    counts += (counts.empty() ? "" : ", ") + std::to_string(n);
   cmd->add_option("--left", o->left, "Rectified left image (colour is converted to grey)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -132,7 +130,8 @@ void add_disparity_command(CLI::App& app) {
   cmd->add_option("--window", o->window, "SAD window N (N x N), built: " + windows)->required();
   cmd->add_option("--min-disp", o->min_disp, "Smallest candidate disparity (>= 0)")->required();
   cmd->add_option("--max-disp", o->max_disp,
-                  "Largest candidate; max - min + 1 must be a built count: " + counts)
+                  "Largest candidate; at most " + std::to_string(disparity::kHostMaxNumDisp) +
+                      " candidates (max - min + 1)")
       ->required();
   cmd->add_option("--mode", o->mode,
                   "thesis: plain SAD on raw pixels, nothing rejected, integer d, invalid 0 "

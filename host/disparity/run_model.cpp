@@ -13,9 +13,8 @@ namespace scw::disparity {
 
 namespace {
 
-// The built windows and counts as template packs; they must list kHostWindows / kHostNumDisps.
+// The built windows as a template pack; it must list kHostWindows.
 using Windows = std::integer_sequence<int, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23>;
-using NumDisps = std::integer_sequence<int, 16, 32, 45, 48, 64, 96, 128>;
 
 template <int... V, std::size_t K>
 constexpr bool same(std::integer_sequence<int, V...>, const std::array<int, K>& a) {
@@ -25,13 +24,13 @@ constexpr bool same(std::integer_sequence<int, V...>, const std::array<int, K>& 
     if (v[i] != a[i]) return false;
   return true;
 }
-static_assert(same(Windows{}, kHostWindows) && same(NumDisps{}, kHostNumDisps));
+static_assert(same(Windows{}, kHostWindows));
 
 using Runner = cv::Mat (*)(const cv::Mat&, const cv::Mat&, const DisparityConfig&);
 
-template <int N, int ND>
+template <int N>
 cv::Mat run_built(const cv::Mat& left, const cv::Mat& right, const DisparityConfig& cfg) {
-  using Params = hls::disparity::DisparityParams<1, kHostMaxWidthPx, N, ND>;
+  using Params = hls::disparity::DisparityParams<1, kHostMaxWidthPx, N, kHostMaxNumDisp>;
   const auto l = sim::frame_beats<1>(left.ptr<std::uint8_t>(), cfg.width, cfg.height);
   const auto r = sim::frame_beats<1>(right.ptr<std::uint8_t>(), cfg.width, cfg.height);
   const auto beats = run_disparity_model<Params>(l, r, cfg);
@@ -41,17 +40,10 @@ cv::Mat run_built(const cv::Mat& left, const cv::Mat& right, const DisparityConf
   return out;
 }
 
-template <int ND, int... N>
-Runner find_window(int n, std::integer_sequence<int, N...>) {
+template <int... N>
+Runner find(int n, std::integer_sequence<int, N...>) {
   Runner f = nullptr;
-  ((n == N ? (f = &run_built<N, ND>, 0) : 0), ...);
-  return f;
-}
-
-template <int... ND>
-Runner find(int n, int nd, std::integer_sequence<int, ND...>) {
-  Runner f = nullptr;
-  ((nd == ND ? (f = find_window<ND>(n, Windows{}), 0) : 0), ...);
+  ((n == N ? (f = &run_built<N>, 0) : 0), ...);
   return f;
 }
 
@@ -120,11 +112,11 @@ cv::Mat disparity_image(const cv::Mat& left, const cv::Mat& right, int window_n,
          "; the streaming stage takes dmin >= 0 (it matches the right image only to the left "
          "of the newest pixel)");
   const int count = dmax - dmin + 1;
-  const Runner run = find(window_n, count, NumDisps{});
-  if (!run)
+  if (count > kHostMaxNumDisp)
     fail("the range " + std::to_string(dmin) + " .. " + std::to_string(dmax) + " has " +
-         std::to_string(count) + " candidates; the built stages evaluate exactly " +
-         list(kHostNumDisps) + " (choose dmax = dmin + count - 1)");
+         std::to_string(count) + " candidates; the built stage evaluates at most " +
+         std::to_string(kHostMaxNumDisp) + " (narrow the range)");
+  const Runner run = find(window_n, Windows{});
   if (options.prefilter_cap < 1 || options.prefilter_cap > 63)
     fail("the prefilter cap must be 1 .. 63, got " + std::to_string(options.prefilter_cap));
   if (options.sad_limit < 0 || options.texture_threshold < 0 || options.uniqueness_ratio < 0)
@@ -134,6 +126,7 @@ cv::Mat disparity_image(const cv::Mat& left, const cv::Mat& right, int window_n,
   cfg.width = left.cols;
   cfg.height = left.rows;
   cfg.dmin = dmin;
+  cfg.num_disp = count;
   const cv::Mat l = left.isContinuous() ? left : left.clone();
   const cv::Mat r = right.isContinuous() ? right : right.clone();
   return run(l, r, cfg);

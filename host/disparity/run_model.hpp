@@ -20,12 +20,11 @@ using hls::disparity::DisparityConfig;
 
 /// The CLI's widest frame (the model's line buffers are sized for it; height is unbounded).
 constexpr int kHostMaxWidthPx = 2048;
-/// Windows N and candidate counts NumDisp the host builds (both are compile-time structure of
-/// the stage). Every pair is instantiated; a range needs dmax - dmin + 1 to be exactly one of
-/// the counts, since the winner over more candidates is another result (docs/disparity.md,
-/// "The CLI and the default mode").
+/// Windows N the host builds (compile-time structure of the stage), each with
+/// kHostMaxNumDisp candidates in parallel; a range uses dmax - dmin + 1 of them
+/// (DisparityConfig::num_disp, a run-time setting of the stage).
 constexpr std::array<int, 11> kHostWindows{3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23};
-constexpr std::array<int, 7> kHostNumDisps{16, 32, 45, 48, 64, 96, 128};
+constexpr int kHostMaxNumDisp = 128;
 
 /// The two named modes of `scw disparity --mode`.
 enum class Mode { thesis, opencv };
@@ -50,7 +49,7 @@ cv::Mat read_grey_image(const std::string& path);
 /// reference::disparity_reference. Throws std::invalid_argument, saying what is supported,
 /// for: empty or non-8-bit-grey images, different sizes, a width above kHostMaxWidthPx, a
 /// width or height below the window, dmin < 0, dmax < dmin, an even window, a window outside
-/// kHostWindows or a count dmax - dmin + 1 outside kHostNumDisps.
+/// kHostWindows or more than kHostMaxNumDisp candidates.
 cv::Mat disparity_image(const cv::Mat& left, const cv::Mat& right, int window_n, int dmin, int dmax,
                         const DisparityConfig& options);
 

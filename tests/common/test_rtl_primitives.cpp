@@ -30,6 +30,7 @@
 #include "sim/rtl_stream.hpp"
 #include "sim/stream_check.hpp"
 #include "tests/common/primitive_configs.hpp"
+#include "tests/common/twin_check.hpp"
 
 namespace {
 
@@ -62,14 +63,8 @@ void check_twins(MakeCpp make_cpp, MakeRtl make_rtl, const std::vector<In>& in,
       auto rtl = make_rtl();
       const auto rc = sim::run_stream(cpp, in, pattern, expected.size());
       const auto rr = sim::run_stream(rtl, in, pattern, expected.size());
-      CHECK(rc.violations.empty());
-      CHECK(rr.violations.empty());
-      INFO((rr.violations.empty() ? std::string() : rr.violations.front()));
-      REQUIRE_FALSE(rc.timed_out);
-      REQUIRE_FALSE(rr.timed_out);
+      test::check_twin_runs(rc, rr);
       CHECK(rc.out == expected);
-      CHECK(rr.out == expected);
-      CHECK(sim::first_difference(rc.trace, rr.trace, "C++", "RTL") == "");
     }
   }
 }
@@ -179,8 +174,7 @@ TEST_CASE("scw_line_buffer flags malformed rows and recovers on the next sof",
   sim::RtlStream<Vline_buffer_p2, In, Out> rtl("line_buffer");
   const auto rc = sim::run_stream(cpp, in, {}, in.size());
   const auto rr = sim::run_stream(rtl, in, {}, in.size());
-  REQUIRE_FALSE(rr.timed_out);
-  CHECK(sim::first_difference(rc.trace, rr.trace, "C++", "RTL") == "");
+  test::check_twin_runs(rc, rr);
   CHECK(cpp.kernel().error());
   CHECK(rtl.dut().err_o == 1);
   // The good frame after the bad one comes out exactly as the reference says.

@@ -41,7 +41,8 @@ Pair random_pair(int w, int h, int dmin, int nd, std::uint64_t seed) {
 /// Frames back to back through the model (no stalls); every output frame must equal the
 /// reference of its own pair.
 template <typename Params>
-void check(const std::vector<Pair>& frames, int w, int h, const DisparityConfig& cfg) {
+void check(const std::vector<Pair>& frames, int w, int h, const DisparityConfig& cfg,
+           int num_disp = Params::kNumDisp) {
   constexpr int P = Params::kPpc;
   std::vector<typename Params::pixel_beat> l, r;
   for (const auto& f : frames) {
@@ -58,7 +59,7 @@ void check(const std::vector<Pair>& frames, int w, int h, const DisparityConfig&
   const std::size_t per_frame = l.size() / frames.size();
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const auto ref = reference::disparity_reference(frames[f].left.data(), frames[f].right.data(),
-                                                    w, h, Params::kWindow, Params::kNumDisp, cfg);
+                                                    w, h, Params::kWindow, num_disp, cfg);
     std::vector<std::uint16_t> got;
     for (std::size_t i = f * per_frame; i < (f + 1) * per_frame; ++i)
       got.insert(got.end(), run.out[i].px.begin(), run.out[i].px.end());
@@ -142,6 +143,23 @@ TEST_CASE("disparity model equals the direct reference (opencv mode)", "[dispari
     check<hls::disparity::DisparityParams<1, 128, 21, 45>>(
         {tsukuba(100, 100, 128, 40), random_pair(128, 40, 20, 45, 16)}, 128, 40,
         hls::disparity::opencv_mode(128, 40, 20));
+  }
+}
+
+TEST_CASE("disparity model with fewer candidates than built equals the reference",
+          "[disparity][hls]") {
+  // A stage built for 16 candidates run on 11 (DisparityConfig::num_disp) must give exactly the
+  // 11-candidate result: winner, uniqueness, sub-pixel ends and valid region all follow it.
+  using Params = hls::disparity::DisparityParams<2, 96, 7, 16>;
+  constexpr int kUsed = 11;
+  const auto frames = std::vector<Pair>{random_pair(96, 30, 3, kUsed, 21), tsukuba(60, 80, 96, 30)};
+  for (const bool opencv : {false, true}) {
+    DYNAMIC_SECTION((opencv ? "opencv mode" : "thesis mode")) {
+      auto cfg = opencv ? hls::disparity::opencv_mode(96, 30, 3)
+                        : hls::disparity::thesis_mode(96, 30, 3);
+      cfg.num_disp = kUsed;
+      check<Params>(frames, 96, 30, cfg, kUsed);
+    }
   }
 }
 

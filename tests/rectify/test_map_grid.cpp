@@ -30,6 +30,7 @@
 #include "sim/map_grid_rtl.hpp"
 #include "sim/rectify_model.hpp"
 #include "tests/common/primitive_configs.hpp"
+#include "tests/common/twin_check.hpp"
 #include "tests/rectify/random_maps.hpp"
 
 namespace {
@@ -170,13 +171,7 @@ void run_twins(const KnotGrid& g, const sim::StallPattern& pattern, int frames,
                                                              1'000'000, hook(cpp));
   const auto rr = sim::run_source<sim::MapGridRtl<VM, Params>>(rtl, pattern, expected.size(),
                                                                1'000'000, hook(rtl));
-  CHECK(rc.violations.empty());
-  CHECK(rr.violations.empty());
-  INFO((rr.violations.empty() ? std::string() : rr.violations.front()));
-  REQUIRE_FALSE(rc.timed_out);
-  REQUIRE_FALSE(rr.timed_out);
-  CHECK(sim::first_difference(rc.trace, rr.trace, "C++", "RTL") == "");
-  CHECK(rc.out == rr.out);
+  test::check_twin_runs(rc, rr);
   if (!mid_run) CHECK(rr.out == expected);
 }
 

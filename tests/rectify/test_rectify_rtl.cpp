@@ -14,6 +14,7 @@
 #include "sim/rectify_rtl.hpp"
 #include "sim/rtl_params.hpp"
 #include "tests/common/primitive_configs.hpp"
+#include "tests/common/twin_check.hpp"
 #include "tests/rectify/random_maps.hpp"
 #include "tests/rectify/rectify_configs.hpp"
 
@@ -48,13 +49,7 @@ sim::RunResult<typename Params::pixel_beat> run_twins(const test::RectifyStreams
   auto rtl = sim::make_rectify_rtl<VM, Params>("rectify", cfg);
   const auto rc = sim::run_join(cpp, s.raw, s.map, pattern, expected_out);
   const auto rr = sim::run_join(rtl, s.raw, s.map, pattern, expected_out);
-  CHECK(rc.violations.empty());
-  CHECK(rr.violations.empty());
-  INFO((rr.violations.empty() ? std::string() : rr.violations.front()));
-  REQUIRE_FALSE(rc.timed_out);
-  REQUIRE_FALSE(rr.timed_out);
-  CHECK(sim::first_difference(rc.trace, rr.trace, "C++", "RTL") == "");
-  CHECK(rc.out == rr.out);
+  test::check_twin_runs(rc, rr);
   err_cpp = cpp.kernel().error();
   err_rtl = static_cast<std::uint8_t>(rtl.dut().err_o);
   return rr;
