@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,6 +95,34 @@ class Sink : public Component {
   Fifo<T>& in_;
   StallGen gen_;
   std::vector<T> beats_;
+};
+
+/// Puts a source-shaped model in front of a FIFO, running whenever `run` says (default:
+/// always), e.g. the map expander feeding a rectify stage's map FIFO.
+template <typename Model>
+class SourceModelComponent : public Component {
+ public:
+  using Out = typename Model::out_type;
+
+  SourceModelComponent(std::string name, Model model, Fifo<Out>& out,
+                       std::function<bool()> run = {})
+      : Component(std::move(name)), model_(std::move(model)), out_(out), run_(std::move(run)) {
+    connect_out(out_);
+  }
+
+  void eval() override {
+    const bool out_ready = out_.can_push();
+    const auto o = model_.eval(run_ ? run_() : true, out_ready);
+    if (o.out_valid && out_ready) out_.push(o.out);
+  }
+  void tick() override { model_.tick(); }
+
+  Model& model() { return model_; }
+
+ private:
+  Model model_;
+  Fifo<Out>& out_;
+  std::function<bool()> run_;
 };
 
 }  // namespace scw::sim

@@ -11,7 +11,8 @@
 #include <utility>
 
 #include "hls/rectify/map_grid.hpp"
-#include "sim/simulator.hpp"
+#include "sim/components.hpp"
+#include "sim/cycle_model.hpp"
 #include "sim/stream_check.hpp"
 
 namespace scw::sim {
@@ -84,67 +85,5 @@ void load_knots(Model& m, int cols, int rows, KnotAt knot) {
       m.tick();
     }
 }
-
-/// run_stream for a source: `run` follows the input side of `pattern` (idle cycles drop run),
-/// the sink the output side. Stops after `expected_out` beats are taken; checks the handshake
-/// rules every cycle (OutputCheck). `each_cycle(c, model)`, if given, runs before the cycle's
-/// evaluation (to drive the knot port mid-run). The trace records run as in_valid and "a beat
-/// issues if run" as in_ready.
-template <typename Model>
-RunResult<typename Model::out_type> run_source(
-    Model& model, const StallPattern& pattern, std::size_t expected_out,
-    std::int64_t max_cycles = 1'000'000,
-    const std::function<void(std::int64_t, Model&)>& each_cycle = {}) {
-  using Out = typename Model::out_type;
-  RunResult<Out> r;
-  OutputCheck<Out> check(r);
-  StallGen run_gen(pattern, StallGen::Side::kInput);
-  StreamMonitor<Out> mon(pattern);
-  for (std::int64_t c = 0; c < max_cycles; ++c) {
-    if (r.out.size() >= expected_out) {
-      r.cycles = c;
-      return r;
-    }
-    if (each_cycle) each_cycle(c, model);
-    const bool run = run_gen.next();
-    const auto lo = model.eval(run, false);
-    const auto hi = model.eval(run, true);
-    const bool out_ready = mon.ready();
-    const auto o = model.eval(run, out_ready);
-    check.cycle(c, lo, hi, o, out_ready, CycleRecord{run, o.in_ready, false, false, {}});
-    model.tick();
-  }
-  r.timed_out = true;
-  r.cycles = max_cycles;
-  return r;
-}
-
-/// Puts a source-shaped model in front of a FIFO, running whenever `run` says (default:
-/// always), e.g. the map expander feeding a rectify stage's map FIFO.
-template <typename Model>
-class SourceModelComponent : public Component {
- public:
-  using Out = typename Model::out_type;
-
-  SourceModelComponent(std::string name, Model model, Fifo<Out>& out,
-                       std::function<bool()> run = {})
-      : Component(std::move(name)), model_(std::move(model)), out_(out), run_(std::move(run)) {
-    connect_out(out_);
-  }
-
-  void eval() override {
-    const bool out_ready = out_.can_push();
-    const auto o = model_.eval(run_ ? run_() : true, out_ready);
-    if (o.out_valid && out_ready) out_.push(o.out);
-  }
-  void tick() override { model_.tick(); }
-
-  Model& model() { return model_; }
-
- private:
-  Model model_;
-  Fifo<Out>& out_;
-  std::function<bool()> run_;
-};
 
 }  // namespace scw::sim

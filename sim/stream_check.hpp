@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -155,6 +156,40 @@ RunResult<typename Model::out_type> run_stream(Model& model,
     check.cycle(c, lo, hi, o, out_ready, CycleRecord{in_valid, o.in_ready, false, false, {}});
     model.tick();
     drv.clock(in_valid && o.in_ready);
+  }
+  r.timed_out = true;
+  r.cycles = max_cycles;
+  return r;
+}
+
+/// run_stream for a source: `run` follows the input side of `pattern` (idle cycles drop run),
+/// the sink the output side. Stops after `expected_out` beats are taken; checks the handshake
+/// rules every cycle (OutputCheck). `each_cycle(c, model)`, if given, runs before the cycle's
+/// evaluation (to drive the knot port mid-run). The trace records run as in_valid and "a beat
+/// issues if run" as in_ready.
+template <typename Model>
+RunResult<typename Model::out_type> run_source(
+    Model& model, const StallPattern& pattern, std::size_t expected_out,
+    std::int64_t max_cycles = 1'000'000,
+    const std::function<void(std::int64_t, Model&)>& each_cycle = {}) {
+  using Out = typename Model::out_type;
+  RunResult<Out> r;
+  OutputCheck<Out> check(r);
+  StallGen run_gen(pattern, StallGen::Side::kInput);
+  StreamMonitor<Out> mon(pattern);
+  for (std::int64_t c = 0; c < max_cycles; ++c) {
+    if (r.out.size() >= expected_out) {
+      r.cycles = c;
+      return r;
+    }
+    if (each_cycle) each_cycle(c, model);
+    const bool run = run_gen.next();
+    const auto lo = model.eval(run, false);
+    const auto hi = model.eval(run, true);
+    const bool out_ready = mon.ready();
+    const auto o = model.eval(run, out_ready);
+    check.cycle(c, lo, hi, o, out_ready, CycleRecord{run, o.in_ready, false, false, {}});
+    model.tick();
   }
   r.timed_out = true;
   r.cycles = max_cycles;
