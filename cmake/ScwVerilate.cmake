@@ -1,20 +1,26 @@
 # SPDX-License-Identifier: Apache-2.0
 # scw_verilate(): one Verilated model of one RTL module at one parameter set.
 #
-#   scw_verilate(<target> TOP <module> PREFIX <Vname> [STAGE <dir>] [PARAMS Name=Value ...])
+#   scw_verilate(<target> TOP <module> PREFIX <Vname> [STAGE <dir>] [FILES <name.sv> ...]
+#                [PARAMS Name=Value ...])
 #
-# Reads the package, every primitive in rtl_models/common and, with STAGE, rtl_models/<dir>.
+# Reads the package, every primitive in rtl_models/common and, with STAGE, rtl_models/<dir>
+# (only the named FILES of it when given: a unit test of one block needs no more).
 # The C++ side declares the same parameter values once in a constexpr struct and
 # static_asserts them against the model's /*verilator public*/ parameters, so a mismatch
 # between this call and the C++ fails the build rather than the test.
 set(SCW_RTL_DIR "${CMAKE_CURRENT_LIST_DIR}/../rtl_models")
 
 function(scw_verilate target)
-  cmake_parse_arguments(ARG "" "TOP;PREFIX;STAGE" "PARAMS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TOP;PREFIX;STAGE" "PARAMS;FILES" ${ARGN})
   file(GLOB common_sv CONFIGURE_DEPENDS "${SCW_RTL_DIR}/common/*.sv")
   list(REMOVE_ITEM common_sv "${SCW_RTL_DIR}/common/scw_pkg.sv")
   set(sources "${SCW_RTL_DIR}/common/scw_pkg.sv" ${common_sv})
-  if(ARG_STAGE)
+  if(ARG_STAGE AND ARG_FILES)
+    foreach(f IN LISTS ARG_FILES)
+      list(APPEND sources "${SCW_RTL_DIR}/${ARG_STAGE}/${f}")
+    endforeach()
+  elseif(ARG_STAGE)
     file(GLOB stage_sv CONFIGURE_DEPENDS "${SCW_RTL_DIR}/${ARG_STAGE}/*.sv")
     list(APPEND sources ${stage_sv})
   endif()

@@ -30,7 +30,8 @@ done
 
 # disparity/<preset>: a 64 x 24 random texture pair with known shifts (N = 5, d 0..15, thesis
 # mode) and a 96 x 48 Tsukuba crop (N = 9, d 0..15, opencv mode), P = 2, from the C++ model,
-# checked against the direct reference (the RTL replay comes with the RTL).
+# checked against the direct reference; CTest replays both against scw_disparity
+# (tests/disparity/tb/).
 mkdir -p "$out/disparity"
 for preset in texture tsukuba; do
   "$scw" vectors disparity --preset "$preset" --data-dir "$root/data/tsukuba" \

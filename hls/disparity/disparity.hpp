@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/disparity/decide_latency.hpp"
 #include "hls/disparity/disparity_params.hpp"
 #include "hls/disparity/prefilter.hpp"
 
@@ -129,6 +130,12 @@ class DisparityCore {
 /// first rows come in: one beat per clock in steady state, no flush. With cfg.prefilter both
 /// images pass an XSobel kernel first (two rows later, still one beat per clock).
 ///
+/// Timing is the RTL's (rtl_models/disparity/scw_disparity.sv): the core is a free-running
+/// pipeline, so the results of a beat fed to it at clock t can be read from clock t + kLatency
+/// on; the queue counts them as soon as the beat is fed (credits), so it never overflows and
+/// never stalls the pipeline, and kQueue covers the pipeline so the stage still takes one beat
+/// per clock.
+///
 /// Geometry comes from the configuration; sof/eol are checked, never trusted (sticky error()).
 /// A sof in the middle of a frame is held while the writer feeds the rest of the interrupted
 /// frame as zero pixels, one beat per clock, so the output stays whole frames and the next
@@ -138,8 +145,15 @@ class Disparity {
  public:
   static constexpr int P = Params::kPpc;
   static constexpr int R = Params::kRadius;
-  /// Result queue: the writer needs room for P results, the reader takes up to P.
-  static constexpr int kQueue = 4 * P;
+  /// Clocks from feeding a beat to the core to reading its results: the prefilter's read (the
+  /// raw path is delayed as much, so both modes share one latency), kFrontLatency to the window
+  /// sums, the decision unit, and the queue's write.
+  static constexpr int kLatency = XSobel<Params>::kReadLatency + kFrontLatency +
+                                  decide_latency(Params::kNumDisp) + 1;
+  /// Result queue in pixels, a power of two per lane: room for the pipeline's kLatency beats,
+  /// the beat being fed and the one being read (docs/disparity.md).
+  static constexpr int kQueue = P * queue_words(kLatency + 2);
+  using params = Params;
   using in_type = typename Params::pixel_beat;
   using out_type = typename Params::disp_beat;
 
@@ -162,7 +176,7 @@ class Disparity {
   /// Whether the reader can emit its next beat (given that the output advances).
   bool read_allowed() const {
     if (out_x_ == 0 && out_y_ == 0 && frames_in_ == frames_out_) return false;  // not started
-    return count_ >= computed_lanes();
+    return ready_ >= computed_lanes();
   }
 
   /// One clock edge: `take` = a beat pair was accepted; `advance` = the output moves.
@@ -172,6 +186,12 @@ class Disparity {
 #pragma HLS INLINE
     // clang-format on
     Emit e;
+    ready_ += arriving_[0];  // results that left the pipeline at the last edge
+    for (int i = 0; i + 1 < kLatency; ++i) arriving_[i] = arriving_[i + 1];
+    arriving_[kLatency - 1] = 0;
+    // Every decision of this clock sees the state before its edge, as registers do.
+    const bool room = input_room();
+    const bool feed_prefiltered = cfg_.prefilter && xs_l_.read_allowed() && core_room();
     if (advance && read_allowed()) e = read_beat();
     // The raw pair entering this clock, if any: taken, a zero pair of an interrupted frame,
     // or the held first pair of the next frame.
@@ -194,9 +214,9 @@ class Disparity {
         bl = l;
         br = r;
       }
-    } else if (skip_ && input_room()) {
+    } else if (skip_ && room) {
       have = true;  // the rest of an interrupted frame, as zeros
-    } else if (held_ && input_room()) {
+    } else if (held_ && room) {
       held_ = false;
       have = true;
       bl = held_l_;
@@ -207,7 +227,7 @@ class Disparity {
       if (have) write_core(bl, br);
       return e;
     }
-    if (xs_l_.read_allowed() && core_room()) {
+    if (feed_prefiltered) {
       const in_type pl = xs_l_.read();
       write_core(pl, xs_r_.read());
     }
@@ -239,6 +259,7 @@ class Disparity {
     core_.step(core_x_ * P, core_y_, l, r, [this](disp_t v) {
       queue_[(head_ + count_) % kQueue] = v;
       ++count_;
+      ++arriving_[kLatency - 1];
     });
     if (++core_x_ < cols()) return;
     core_x_ = 0;
@@ -264,6 +285,7 @@ class Disparity {
         e.beat.px[i] = queue_[head_];
         head_ = (head_ + 1) % kQueue;
         --count_;
+        --ready_;
       } else {
         e.beat.px[i] = invalid_code(cfg_);
       }
@@ -282,7 +304,10 @@ class Disparity {
   DisparityConfig cfg_;
   DisparityCore<Params> core_;
   std::array<disp_t, kQueue> queue_{};
-  int head_ = 0, count_ = 0;
+  int head_ = 0;
+  int count_ = 0;  // results fed to the core and not yet read (the credits in use)
+  int ready_ = 0;  // of those, the ones out of the pipeline
+  std::array<int, kLatency> arriving_{};  // [i]: results readable i + 1 clocks from now
   XSobel<Params> xs_l_, xs_r_;
   int in_x_ = 0, in_y_ = 0, core_x_ = 0, core_y_ = 0, out_x_ = 0, out_y_ = 0;
   unsigned frames_in_ = 0, frames_out_ = 0;

@@ -16,10 +16,11 @@ using disp_t = std::uint16_t;
 /// Built-in structure of one stage: the SAD window N x N (N odd; N rows of line buffer) and the
 /// number of candidates evaluated in parallel; dmin and how many of them are used
 /// (DisparityConfig::num_disp) are set at run time.
-template <int P, int MaxWidthPx, int N, int NumDisp>
+template <int P, int MaxWidthPx, int N, int NumDisp, int MaxHeight = 1024>
 struct DisparityParams {
   static constexpr int kPpc = P;
   static constexpr int kMaxWidthPx = MaxWidthPx;
+  static constexpr int kMaxHeight = MaxHeight;  // sizes the RTL's row counters
   static constexpr int kWindow = N;
   static constexpr int kRadius = N / 2;
   static constexpr int kNumDisp = NumDisp;
@@ -49,6 +50,17 @@ struct DisparityConfig {
   bool subpixel = false;      // 4-bit sub-pixel fraction (StereoBM's parabola-like fit)
   bool opencv_invalid = false;  // invalid code (dmin - 1) * 16 as StereoBM, else 0
 };
+
+/// Clocks from a beat entering the core's datapath to its window sums entering the decision
+/// unit: RAM read, shift and absolute differences, column sums, window sums (docs/disparity.md).
+inline constexpr int kFrontLatency = 4;
+
+/// The smallest power of two >= n: the result queue's depth in beats.
+constexpr int queue_words(int n) {
+  int w = 1;
+  while (w < n) w *= 2;
+  return w;
+}
 
 /// The number of candidates a stage built for NumDisp evaluates under `c`.
 template <int NumDisp>

@@ -31,8 +31,9 @@ using hls::disparity::DisparityConfig;
 constexpr int kPpc = 2;
 constexpr int kMaxWidthPx = 128;
 constexpr int kNumDisp = 16;
+constexpr int kMaxHeight = 64;  // the RTL's row counters (a replay builds scw_disparity so)
 template <int N>
-using VecParams = hls::disparity::DisparityParams<kPpc, kMaxWidthPx, N, kNumDisp>;
+using VecParams = hls::disparity::DisparityParams<kPpc, kMaxWidthPx, N, kNumDisp, kMaxHeight>;
 
 struct Options {
   std::string preset;
@@ -124,7 +125,7 @@ template <int N>
 void run(const Options& o, const Frame& f) {
   using Params = VecParams<N>;
   const int w = f.left.cols, h = f.left.rows;
-  if (w > kMaxWidthPx || w % kPpc != 0 || w < N || h < N)
+  if (w > kMaxWidthPx || w % kPpc != 0 || w < N || h < N || h > kMaxHeight)
     throw std::logic_error("vectors disparity: frame does not fit the vector configuration");
   const DisparityConfig& cfg = f.cfg;
   const auto l = sim::frame_beats<kPpc>(f.left.ptr<std::uint8_t>(), w, h);
@@ -158,6 +159,7 @@ void run(const Options& o, const Frame& f) {
                                  {"height", h},
                                  {"ppc", kPpc},
                                  {"max_width_px", kMaxWidthPx},
+                                 {"max_height", kMaxHeight},
                                  {"window", N},
                                  {"num_disp", kNumDisp},
                                  {"mode", disparity::mode_name(f.mode)},

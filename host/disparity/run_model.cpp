@@ -121,6 +121,9 @@ cv::Mat disparity_image(const cv::Mat& left, const cv::Mat& right, int window_n,
     fail("the prefilter cap must be 1 .. 63, got " + std::to_string(options.prefilter_cap));
   if (options.sad_limit < 0 || options.texture_threshold < 0 || options.uniqueness_ratio < 0)
     fail("the SAD limit, texture threshold and uniqueness ratio must be >= 0 (0 = off)");
+  if (options.uniqueness_ratio > 255)  // the stage's 8-bit cfg_uniqueness_i
+    fail("the uniqueness ratio must be 0 .. 255 %, got " +
+         std::to_string(options.uniqueness_ratio));
 
   DisparityConfig cfg = options;
   cfg.width = left.cols;

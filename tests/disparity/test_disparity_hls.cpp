@@ -5,52 +5,28 @@
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <random>
 
 #include "host/reference/disparity_ref.hpp"
 #include "sim/disparity_model.hpp"
 #include "sim/frame_beats.hpp"
+#include "tests/disparity/disparity_frames.hpp"
 
 namespace {
 
 using namespace scw;
 using hls::disparity::DisparityConfig;
 
-struct Pair {
-  std::vector<std::uint8_t> left, right;
-};
-
-/// A right image of noise and a left image that sees it shifted by a piecewise-constant
-/// disparity field inside [dmin, dmin + nd), with 10 % of the pixels replaced by noise (so
-/// minima are not all unique and ties and rejections happen).
-Pair random_pair(int w, int h, int dmin, int nd, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  Pair p{std::vector<std::uint8_t>(static_cast<std::size_t>(w * h)),
-         std::vector<std::uint8_t>(static_cast<std::size_t>(w * h))};
-  for (auto& v : p.right) v = static_cast<std::uint8_t>(rng() % 64 * 4);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int s = dmin + (x / 7 + y / 5) % nd;
-      auto& l = p.left[static_cast<std::size_t>(y * w + x)];
-      l = x >= s ? p.right[static_cast<std::size_t>(y * w + x - s)] : static_cast<std::uint8_t>(rng());
-      if (rng() % 10 == 0) l = static_cast<std::uint8_t>(rng());
-    }
-  return p;
-}
+using Pair = test::StereoPair;
+using test::random_pair;
 
 /// Frames back to back through the model (no stalls); every output frame must equal the
 /// reference of its own pair.
 template <typename Params>
 void check(const std::vector<Pair>& frames, int w, int h, const DisparityConfig& cfg,
            int num_disp = Params::kNumDisp) {
-  constexpr int P = Params::kPpc;
-  std::vector<typename Params::pixel_beat> l, r;
-  for (const auto& f : frames) {
-    const auto bl = sim::frame_beats<P>(f.left.data(), w, h);
-    const auto br = sim::frame_beats<P>(f.right.data(), w, h);
-    l.insert(l.end(), bl.begin(), bl.end());
-    r.insert(r.end(), br.begin(), br.end());
-  }
+  const auto s = test::stereo_streams<typename Params::pixel_beat>(frames, w, h);
+  const auto& l = s.left;
+  const auto& r = s.right;
   auto model = std::make_unique<sim::DisparityModel<Params>>(cfg);
   const auto run = sim::run_join(*model, l, r, {}, l.size(), 100'000'000);
   REQUIRE_FALSE(run.timed_out);
@@ -167,19 +143,16 @@ TEST_CASE("disparity runs one beat per clock across frames", "[disparity][hls][c
   // Exact cycle counts: K frames back to back are taken in K * H * W/P cycles, one pair of beats
   // per clock, and the output ends when the reader has emitted what follows the last computed
   // pixel: the rest of its row (ceil(R/P) beats) and the bottom R rows (invalid codes, emitted
-  // without input), plus the output register and the cycle that takes the last beat. No cycle
-  // is lost between frames: the bottom rows of a frame leave while the next frame comes in.
+  // without input), after the core's latency, the output register and the cycle that takes the
+  // last beat. No cycle is lost between frames: the bottom rows of a frame leave while the next
+  // frame comes in.
   using Params = hls::disparity::DisparityParams<2, 64, 7, 8>;
   constexpr int W = 64, H = 20, K = 3, R = Params::kRadius, P = Params::kPpc;
   std::vector<Pair> frames;
   for (int f = 0; f < K; ++f) frames.push_back(random_pair(W, H, 1, 8, 40 + f));
-  std::vector<Params::pixel_beat> l, r;
-  for (const auto& f : frames) {
-    const auto bl = sim::frame_beats<P>(f.left.data(), W, H);
-    const auto br = sim::frame_beats<P>(f.right.data(), W, H);
-    l.insert(l.end(), bl.begin(), bl.end());
-    r.insert(r.end(), br.begin(), br.end());
-  }
+  const auto s = test::stereo_streams<Params::pixel_beat>(frames, W, H);
+  const auto& l = s.left;
+  const auto& r = s.right;
   // The prefilter (opencv mode) delays the core by two rows: its output row v needs input row
   // v + 1 complete, so it leaves while input row v + 2 comes in.
   for (const bool opencv : {false, true}) {
@@ -193,7 +166,8 @@ TEST_CASE("disparity runs one beat per clock across frames", "[disparity][hls][c
         if (run.trace[c].in_valid && run.trace[c].in_ready) last_take = static_cast<std::int64_t>(c);
       CHECK(last_take == K * H * W / P - 1);
       CHECK(run.cycles ==
-            K * H * W / P + (R + (opencv ? 2 : 0)) * W / P + (R + P - 1) / P + 2);
+            K * H * W / P + (R + (opencv ? 2 : 0)) * W / P + (R + P - 1) / P + 1 +
+                hls::disparity::Disparity<Params>::kLatency);
     }
   }
 }

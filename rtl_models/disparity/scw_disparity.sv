@@ -1,0 +1,467 @@
+// SPDX-License-Identifier: Apache-2.0
+// Disparity: SAD block matching of a rectified stereo pair, one beat pair per clock.
+`default_nettype none
+
+// The C++ twin is scw::hls::disparity::Disparity clocked by scw::sim::DisparityModel; the
+// arithmetic and the rules are in docs/disparity.md.
+//
+// Control runs at the issue point, data in free-running pipelines behind it:
+//   writer   takes one left and one right beat together (only when both are valid), checks
+//            sof/eol against the configured geometry, and issues the pair to the core, or, in
+//            opencv mode, writes both into the x-Sobel prefilters, whose reader issues instead.
+//   credits  a beat is issued only when the result queue has room for P more results counting
+//            those still in the pipeline, so the pipeline never stalls and never overflows.
+//   core     scw_disparity_sums (window sums) -> one scw_disparity_decide per lane -> queue.
+//            A beat issued at cycle t has its results readable at t + ResultLatency.
+//   reader   emits the output frame in raster order behind an output register: results where
+//            the core computes them (rows R .. H - R - 1, columns < W - R), the invalid code
+//            elsewhere without waiting, so a frame's last rows leave while the next comes in.
+// A sof in mid-frame is held while the rest of the interrupted frame is issued as zero pixels;
+// a beat that should start a frame but has no sof is dropped; both set err_o (sticky).
+// cfg_* are static: set them before rst_ni rises (registered without reset).
+module scw_disparity #(
+  parameter int unsigned Ppc        /*verilator public*/ = 1,
+  parameter int unsigned MaxWidthPx /*verilator public*/ = 32,
+  parameter int unsigned MaxHeight  /*verilator public*/ = 16,
+  parameter int unsigned Window     /*verilator public*/ = 3,
+  parameter int unsigned NumDisp    /*verilator public*/ = 4,
+  localparam int unsigned PixW     = scw_pkg::PixelBits,
+  localparam int unsigned BeatW    = Ppc * PixW,
+  localparam int unsigned OutW     = Ppc * 16,
+  localparam int unsigned WW       = $clog2(MaxWidthPx + 1),
+  localparam int unsigned HW       = $clog2(MaxHeight + 1),
+  localparam int unsigned NumW     = $clog2(NumDisp + 1)
+) (
+  input  logic             clk_i,
+  input  logic             rst_ni,
+  // static configuration (hls::disparity::DisparityConfig)
+  input  logic [WW-1:0]    cfg_width_i,
+  input  logic [HW-1:0]    cfg_height_i,
+  input  logic [WW-1:0]    cfg_dmin_i,
+  input  logic [NumW-1:0]  cfg_num_disp_i,   // 0 or >= NumDisp: all NumDisp candidates
+  input  logic             cfg_prefilter_i,
+  input  logic [5:0]       cfg_cap_i,
+  input  logic [31:0]      cfg_sad_limit_i,
+  input  logic [31:0]      cfg_texture_i,
+  input  logic [7:0]       cfg_uniqueness_i,
+  input  logic             cfg_subpixel_i,
+  input  logic             cfg_opencv_invalid_i,
+  // left and right rectified pixels
+  input  logic             l_valid_i,
+  output logic             l_ready_o,
+  input  logic [BeatW-1:0] l_data_i,
+  input  logic             l_sof_i,
+  input  logic             l_eol_i,
+  input  logic             r_valid_i,
+  output logic             r_ready_o,
+  input  logic [BeatW-1:0] r_data_i,
+  input  logic             r_sof_i,
+  input  logic             r_eol_i,
+  // disparities, Q11.4 in 16 bits per lane
+  output logic             out_valid_o,
+  input  logic             out_ready_i,
+  output logic [OutW-1:0]  out_data_o,
+  output logic             out_sof_o,
+  output logic             out_eol_o,
+  output logic             err_o
+);
+  localparam int unsigned R         = Window / 2;
+  localparam int unsigned Cols      = MaxWidthPx / Ppc;
+  localparam int unsigned ColW      = (Cols > 1) ? $clog2(Cols) : 1;
+  localparam int unsigned SlotW     = $clog2(Window + 1);
+  localparam int unsigned SadBits   = $clog2(Window * Window * 255 + 1);
+  // Latencies, each the twin of a C++ constant (checked by the RTL test at compile time):
+  // XSobel::kReadLatency, kFrontLatency, decide_latency(NumDisp) (its tree has two comparator
+  // levels per stage).
+  localparam int unsigned PfLatency    = 3;
+  localparam int unsigned SumsLatency  = 4;
+  localparam int unsigned TreeStages   = ($clog2(NumDisp) + 1) / 2;
+  localparam int unsigned DecLatency   = TreeStages + 4;
+  /* verilator lint_off UNUSEDPARAM */
+  localparam int unsigned ResultLatency /*verilator public*/ =
+      PfLatency + SumsLatency + DecLatency + 1;
+  localparam int unsigned QueueWords /*verilator public*/ = 1 << $clog2(ResultLatency + 2);
+  /* verilator lint_on UNUSEDPARAM */
+  localparam int unsigned Queue     = Ppc * QueueWords;  // results
+  localparam int unsigned QW        = $clog2(Queue);
+  localparam int unsigned QCW       = QW + 1;            // 0 .. Queue
+  localparam int unsigned QAW       = (QueueWords > 1) ? $clog2(QueueWords) : 1;
+  localparam int unsigned LaneW     = (Ppc > 1) ? $clog2(Ppc) : 1;
+  localparam int unsigned LnW       = $clog2(Ppc + 1);   // 0 .. Ppc
+  localparam int unsigned XW        = WW + NumW + 2;
+
+  if (Ppc != 1 && Ppc != 2 && Ppc != 4) begin : gen_bad_ppc
+    $error("scw_disparity: Ppc must be 1, 2 or 4");
+  end
+
+  // ---- configuration ---------------------------------------------------------------------
+  logic [ColW-1:0] last_col_q;
+  logic [HW-1:0] last_row_q, height_q;
+  logic [WW-1:0] dmin_q, width_q;
+  logic [NumW-1:0] num_q;
+  logic [XW-1:0] first_valid_q;  // dmin + n - 1 + R: the first column with a decision
+  logic [15:0] invalid_q;
+  logic prefilter_q;
+  always_ff @(posedge clk_i) begin
+    width_q       <= cfg_width_i;
+    height_q      <= cfg_height_i;
+    last_col_q    <= ColW'((cfg_width_i >> $clog2(Ppc)) - 1'b1);
+    last_row_q    <= cfg_height_i - 1'b1;
+    dmin_q        <= cfg_dmin_i;
+    num_q         <= (cfg_num_disp_i == '0 || cfg_num_disp_i >= NumW'(NumDisp))
+                         ? NumW'(NumDisp) : cfg_num_disp_i;
+    first_valid_q <= XW'(cfg_dmin_i) + XW'(num_q) - 1'b1 + XW'(R);
+    invalid_q     <= cfg_opencv_invalid_i ? {12'(cfg_dmin_i) - 12'd1, 4'd0} : '0;
+    prefilter_q   <= cfg_prefilter_i;
+  end
+
+  // ---- credits ---------------------------------------------------------------------------
+  logic [QCW-1:0] count_q, ready_q;  // results issued and not read; of those, readable
+  logic core_room;
+  assign core_room = (QCW'(Queue) - count_q) >= QCW'(Ppc);
+
+  // ---- writer ----------------------------------------------------------------------------
+  logic [ColW-1:0] in_col_q;
+  logic [HW-1:0] in_row_q;
+  logic skip_q, held_q;
+  logic [BeatW-1:0] held_l_q, held_r_q;
+  logic pf_wr_allowed, pf_rd_allowed, input_room, take, frame_start, have;
+  logic held_set, held_clr, err_in;
+  logic [BeatW-1:0] have_l, have_r;
+
+  assign input_room  = prefilter_q ? pf_wr_allowed : core_room;
+  assign l_ready_o   = !skip_q && !held_q && l_valid_i && r_valid_i && input_room;
+  assign r_ready_o   = l_ready_o;
+  assign take        = l_ready_o;
+  assign frame_start = (in_col_q == '0) && (in_row_q == '0);
+
+  always_comb begin
+    have     = 1'b0;
+    have_l   = '0;
+    have_r   = '0;
+    held_set = 1'b0;
+    held_clr = 1'b0;
+    err_in   = 1'b0;
+    if (take) begin
+      if (l_sof_i != r_sof_i || l_eol_i != r_eol_i) err_in = 1'b1;
+      if (l_sof_i && !frame_start) begin
+        err_in   = 1'b1;
+        held_set = 1'b1;
+      end else if (!l_sof_i && frame_start) begin
+        err_in = 1'b1;  // dropped: a frame starts with sof
+      end else begin
+        if (l_eol_i != (in_col_q == last_col_q)) err_in = 1'b1;
+        have   = 1'b1;
+        have_l = l_data_i;
+        have_r = r_data_i;
+      end
+    end else if (skip_q && input_room) begin
+      have = 1'b1;  // the rest of an interrupted frame, as zeros
+    end else if (held_q && input_room) begin
+      have     = 1'b1;
+      held_clr = 1'b1;
+      have_l   = held_l_q;
+      have_r   = held_r_q;
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      in_col_q <= '0;
+      in_row_q <= '0;
+      skip_q   <= 1'b0;
+      held_q   <= 1'b0;
+    end else begin
+      if (have) begin
+        if (in_col_q != last_col_q) begin
+          in_col_q <= in_col_q + 1'b1;
+        end else begin
+          in_col_q <= '0;
+          if (in_row_q == last_row_q) begin
+            in_row_q <= '0;
+            skip_q   <= 1'b0;
+          end else begin
+            in_row_q <= in_row_q + 1'b1;
+          end
+        end
+      end
+      if (held_set) begin
+        held_q <= 1'b1;
+        skip_q <= 1'b1;
+      end else if (held_clr) begin
+        held_q <= 1'b0;
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (held_set) begin
+      held_l_q <= l_data_i;
+      held_r_q <= r_data_i;
+    end
+  end
+
+  // ---- prefilters (opencv mode) ----------------------------------------------------------
+  logic pf_rd, pf_wr, pf_l_wr_allowed, pf_r_wr_allowed, pf_l_rd_allowed, pf_r_rd_allowed;
+  // The issue delay line below carries the same valid for both modes.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic pf_l_valid, pf_r_valid;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [BeatW-1:0] pf_l_data, pf_r_data;
+  // Both prefilters see the same writes and reads, so they agree; both are asked anyway.
+  assign pf_wr_allowed = pf_l_wr_allowed && pf_r_wr_allowed;
+  assign pf_rd_allowed = pf_l_rd_allowed && pf_r_rd_allowed;
+  assign pf_wr         = prefilter_q && have;
+  assign pf_rd         = prefilter_q && pf_rd_allowed && core_room;
+
+  scw_disparity_prefilter #(.Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)) u_pf_l (
+    .clk_i, .rst_ni, .cfg_width_i(width_q), .cfg_height_i(height_q), .cfg_cap_i,
+    .wr_allowed_o(pf_l_wr_allowed), .wr_i(pf_wr), .wr_data_i(have_l),
+    .rd_allowed_o(pf_l_rd_allowed), .rd_i(pf_rd),
+    .out_valid_o(pf_l_valid), .out_data_o(pf_l_data)
+  );
+  scw_disparity_prefilter #(.Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)) u_pf_r (
+    .clk_i, .rst_ni, .cfg_width_i(width_q), .cfg_height_i(height_q), .cfg_cap_i,
+    .wr_allowed_o(pf_r_wr_allowed), .wr_i(pf_wr), .wr_data_i(have_r),
+    .rd_allowed_o(pf_r_rd_allowed), .rd_i(pf_rd),
+    .out_valid_o(pf_r_valid), .out_data_o(pf_r_data)
+  );
+
+  // ---- issue -----------------------------------------------------------------------------
+  // One beat pair enters the core per issue; its position, slot and result lanes are decided
+  // here and travel with it.
+  logic issue;
+  logic [ColW-1:0] core_col_q;
+  logic [HW-1:0] core_row_q;
+  logic [SlotW-1:0] core_slot_q;
+  logic [1:0] frames_ahead_q;  // frames the core has started and the reader has not
+  logic [Ppc-1:0] emit, region;
+  logic [LnW-1:0] n_emit;
+  logic core_fs, read_fs;
+  assign issue   = prefilter_q ? pf_rd : have;
+  assign core_fs = (core_col_q == '0) && (core_row_q == '0);
+
+  always_comb begin
+    n_emit = '0;
+    for (int i = 0; i < Ppc; i++) begin
+      // output pixel (x - R, y - R) exists when x >= R and y >= 2R
+      emit[i]   = (core_row_q >= HW'(2 * R)) &&
+                  ((XW'(core_col_q) * XW'(Ppc) + XW'(i)) >= XW'(R));
+      region[i] = (XW'(core_col_q) * XW'(Ppc) + XW'(i)) >= first_valid_q + XW'(R);
+      n_emit    = n_emit + LnW'(emit[i]);
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      core_col_q     <= '0;
+      core_row_q     <= '0;
+      core_slot_q    <= '0;
+      frames_ahead_q <= '0;
+    end else begin
+      if (issue) begin
+        if (core_col_q != last_col_q) begin
+          core_col_q <= core_col_q + 1'b1;
+        end else begin
+          core_col_q  <= '0;
+          core_slot_q <= (core_slot_q == SlotW'(Window)) ? '0 : core_slot_q + 1'b1;
+          core_row_q  <= (core_row_q == last_row_q) ? '0 : core_row_q + 1'b1;
+        end
+      end
+      frames_ahead_q <= frames_ahead_q + 2'(issue && core_fs) - 2'(read_fs);
+    end
+  end
+
+  // The core sees a beat PfLatency cycles after its issue: the prefilter's read, or as long a
+  // delay of the raw pair, so both modes share one latency.
+  localparam int unsigned InfoW = 2 * Ppc + SlotW + HW + ColW;
+  logic [PfLatency-1:0] dly_valid_q;
+  logic [PfLatency*InfoW-1:0] dly_info_q;
+  logic [PfLatency*2*BeatW-1:0] dly_raw_q;
+  if (PfLatency == 1) begin : gen_dly1
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) dly_valid_q <= '0;
+      else dly_valid_q <= issue;
+    end
+    always_ff @(posedge clk_i) begin
+      dly_info_q <= {emit, region, core_slot_q, core_row_q, core_col_q};
+      dly_raw_q  <= {have_r, have_l};
+    end
+  end else begin : gen_dly
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) dly_valid_q <= '0;
+      else dly_valid_q <= {dly_valid_q[PfLatency-2:0], issue};
+    end
+    always_ff @(posedge clk_i) begin
+      dly_info_q <= {dly_info_q[(PfLatency-1)*InfoW-1:0],
+                     emit, region, core_slot_q, core_row_q, core_col_q};
+      dly_raw_q  <= {dly_raw_q[(PfLatency-1)*2*BeatW-1:0], have_r, have_l};
+    end
+  end
+
+  logic c_valid;
+  logic [Ppc-1:0] c_emit, c_region;
+  logic [SlotW-1:0] c_slot;
+  logic [HW-1:0] c_row;
+  logic [ColW-1:0] c_col;
+  logic [BeatW-1:0] c_left, c_right, raw_l, raw_r;
+  assign c_valid = dly_valid_q[PfLatency-1];
+  assign {c_emit, c_region, c_slot, c_row, c_col} = dly_info_q[(PfLatency-1)*InfoW +: InfoW];
+  assign {raw_r, raw_l} = dly_raw_q[(PfLatency-1)*2*BeatW +: 2*BeatW];
+  assign c_left  = prefilter_q ? pf_l_data : raw_l;
+  assign c_right = prefilter_q ? pf_r_data : raw_r;
+
+  // ---- core ------------------------------------------------------------------------------
+  logic s_valid;
+  logic [Ppc*NumDisp*SadBits-1:0] s_sad;
+  logic [Ppc*SadBits-1:0] s_tex;
+  logic [2*Ppc-1:0] s_tag;
+  scw_disparity_sums #(
+    .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Window(Window),
+    .NumDisp(NumDisp), .TagBits(2 * Ppc)
+  ) u_sums (
+    .clk_i, .rst_ni, .cfg_dmin_i(dmin_q), .cfg_cap_i,
+    .valid_i(c_valid), .col_i(c_col), .row_i(c_row), .slot_i(c_slot),
+    .left_i(c_left), .right_i(c_right), .tag_i({c_emit, c_region}),
+    .valid_o(s_valid), .sad_o(s_sad), .texture_o(s_tex), .tag_o(s_tag)
+  );
+
+  logic [Ppc-1:0] d_valid;
+  logic [OutW-1:0] d_disp;
+  for (genvar i = 0; i < Ppc; i++) begin : gen_decide
+    // A lane without an output pixel is not decided at all: its valid never reaches the queue.
+    scw_disparity_decide #(.NumDisp(NumDisp), .SadBits(SadBits), .DminBits(WW)) u_decide (
+      .clk_i, .rst_ni,
+      .cfg_num_i(num_q), .cfg_dmin_i(dmin_q), .cfg_sad_limit_i, .cfg_texture_i,
+      .cfg_uniqueness_i, .cfg_subpixel_i, .cfg_invalid_i(invalid_q),
+      .valid_i(s_valid && s_tag[Ppc + i]), .region_i(s_tag[i]),
+      .sad_i(s_sad[i*NumDisp*SadBits +: NumDisp*SadBits]),
+      .texture_i(s_tex[i*SadBits +: SadBits]),
+      .valid_o(d_valid[i]), .disp_o(d_disp[i*16 +: 16])
+    );
+  end
+
+  // ---- result queue: Ppc banks of QueueWords, result k in bank k % Ppc ------------------
+  // Results of a beat are a suffix of its lanes and an output beat takes a prefix of its
+  // lanes, so both sides move consecutive positions: a rotation by the position's lane.
+  logic [QW-1:0] head_q, tail_q;
+  logic [LnW-1:0] n_in, n_out;
+  logic [LaneW-1:0] rank [Ppc];
+  always_comb begin
+    n_in = '0;
+    for (int i = 0; i < Ppc; i++) begin
+      rank[i] = LaneW'(n_in);
+      n_in    = n_in + LnW'(d_valid[i]);
+    end
+  end
+
+  logic [15:0] bank_rd [Ppc];
+  logic [15:0] lane_rd [Ppc];  // the result at head + i
+  for (genvar b = 0; b < Ppc; b++) begin : gen_bank
+    logic [15:0] mem_q [QueueWords];
+    logic we;
+    logic [QAW-1:0] waddr, raddr;
+    logic [15:0] wdata;
+    logic [QW-1:0] rpos;
+    always_comb begin
+      we    = 1'b0;
+      waddr = '0;
+      wdata = '0;
+      for (int i = 0; i < Ppc; i++) begin
+        if (d_valid[i] && (LaneW'(tail_q + QW'(rank[i])) == LaneW'(b) || Ppc == 1)) begin
+          we    = 1'b1;
+          waddr = QAW'((tail_q + QW'(rank[i])) >> $clog2(Ppc));
+          wdata = d_disp[i*16 +: 16];
+        end
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (we) mem_q[waddr] <= wdata;
+    end
+    // The bank's next position at or after head: head + ((b - head) mod Ppc).
+    if (Ppc == 1) begin : gen_rpos1
+      assign rpos = head_q;
+    end else begin : gen_rpos
+      assign rpos = head_q + QW'(LaneW'(LaneW'(b) - LaneW'(head_q)));
+    end
+    assign raddr      = QAW'(rpos >> $clog2(Ppc));
+    assign bank_rd[b] = mem_q[raddr];
+  end
+  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_rd
+    if (Ppc == 1) begin : gen_one
+      assign lane_rd[i] = bank_rd[0];
+    end else begin : gen_rot
+      assign lane_rd[i] = bank_rd[LaneW'(head_q + QW'(i))];
+    end
+  end
+
+  // ---- reader ----------------------------------------------------------------------------
+  logic [ColW-1:0] out_col_q;
+  logic [HW-1:0] out_row_q;
+  logic out_valid_q, out_sof_q, out_eol_q, adv, started, allowed, read;
+  logic [OutW-1:0] out_data_q, rd_beat;
+  logic [XW-1:0] out_x, right_edge;
+  logic row_computed;
+  assign out_x        = XW'(out_col_q) * XW'(Ppc);
+  assign right_edge   = XW'(width_q) - XW'(R);  // columns >= W - R are not computed
+  assign row_computed = (out_row_q >= HW'(R)) && (out_row_q < height_q - HW'(R));
+  always_comb begin
+    n_out = '0;
+    for (int i = 0; i < Ppc; i++) begin
+      if (row_computed && (out_x + XW'(i)) < right_edge) n_out = n_out + 1'b1;
+    end
+  end
+  assign read_fs = read && (out_col_q == '0) && (out_row_q == '0);
+  assign started = !((out_col_q == '0) && (out_row_q == '0) && (frames_ahead_q == '0));
+  assign allowed = started && (ready_q >= QCW'(n_out));
+  assign adv     = !out_valid_q || out_ready_i;
+  assign read    = adv && allowed;
+
+  always_comb begin
+    for (int i = 0; i < Ppc; i++) begin
+      rd_beat[i*16 +: 16] = invalid_q;
+      if (LnW'(i) < n_out) rd_beat[i*16 +: 16] = lane_rd[i];
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      out_col_q   <= '0;
+      out_row_q   <= '0;
+      out_valid_q <= 1'b0;
+      head_q      <= '0;
+      tail_q      <= '0;
+      count_q     <= '0;
+      ready_q     <= '0;
+      err_o       <= 1'b0;
+    end else begin
+      if (adv) out_valid_q <= read;
+      if (read) begin
+        head_q <= head_q + QW'(n_out);
+        if (out_col_q != last_col_q) begin
+          out_col_q <= out_col_q + 1'b1;
+        end else begin
+          out_col_q <= '0;
+          out_row_q <= (out_row_q == last_row_q) ? '0 : out_row_q + 1'b1;
+        end
+      end
+      tail_q  <= tail_q + QW'(n_in);
+      count_q <= count_q + (issue ? QCW'(n_emit) : '0) - (read ? QCW'(n_out) : '0);
+      ready_q <= ready_q + QCW'(n_in) - (read ? QCW'(n_out) : '0);
+      if (err_in) err_o <= 1'b1;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (read) begin
+      out_data_q <= rd_beat;
+      out_sof_q  <= (out_col_q == '0) && (out_row_q == '0);
+      out_eol_q  <= out_col_q == last_col_q;
+    end
+  end
+
+  assign out_valid_o = out_valid_q;
+  assign out_data_o  = out_data_q;
+  assign out_sof_o   = out_sof_q;
+  assign out_eol_o   = out_eol_q;
+endmodule

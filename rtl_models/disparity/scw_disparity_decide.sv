@@ -1,0 +1,337 @@
+// SPDX-License-Identifier: Apache-2.0
+// Disparity decision: the winning candidate of one pixel, the rejection rules and the value.
+`default_nettype none
+
+// Twin of scw::hls::disparity::decide<NumDisp>(sad, texture, cfg) (hls/disparity/disparity.hpp),
+// bit for bit for every input, behind a free-running pipeline (no enable, no stall):
+//
+//   t1 .. tT  argmin tree, T = ceil(log2(NumDisp) / 2): two comparator levels per register (the
+//             first stage has one when the level count is odd, as its inputs come from
+//             outside). Each node carries its winner's neighbours sad[best +- 1], so the
+//             sub-pixel fit needs no NumDisp-wide select afterwards.
+//   A   p = m * U, m > limit, d = dmin + best, the uniqueness mask (|d - best| > 1, d < n),
+//       |diff| and mx = max(prev, next) - m
+//   B   floor(p / 100) by a reciprocal multiply, d - 1, quotient bits 2 and 1
+//   C   thresh = m + floor(p / 100) against every candidate's delayed SAD; quotient bit 0 and
+//       whether the bits below it are nonzero
+//   D   the OR of every rejection and the value, registered on disp_o
+//   Latency = T + 4 = scw::hls::disparity::decide_latency(NumDisp) (decide_latency.hpp).
+//
+// Sub-pixel: when the fit applies, prev > m (a tie at best - 1 would have won) and next >= m,
+// so den = prev + next - 2m + |diff| = 2 mx > 0 and frac = sign(diff) q with
+// q = floor(|diff| 128 / mx) <= 128. The output needs only (frac + 15) >>> 4, which is
+// ceil(q / 16) for diff > 0 and -floor(q / 16) otherwise: qhi = floor(|diff| 8 / mx) from three
+// restoring steps, and whether q mod 16 != 0, which is 16 r >= mx for their remainder r.
+// |diff| = mx (q = 128) happens only for diff > 0; it comes out as qhi = 7 with r = mx, which
+// rounds up to the same 8, so no fourth step. The adjustment is in -7 .. 8, so
+// d * 16 + adj = {adj < 0 ? d - 1 : d, adj[3:0]}: no adder at the output.
+//
+// Uniqueness: floor(p / 100) = floor(floor(p / 4) / 25), and floor(x / 25) = (x RecipMul) >>
+// RecipShift exactly for every x up to floor((2^SadBits - 1) 255 / 4) (the elaboration-time
+// search below; the unit test checks every x). The rejection rules all give the same invalid
+// code, so their order does not matter and one OR decides.
+//
+// cfg_* are static: registered here without reset (with what is derived from them), which keeps
+// them off every timing path; set them at least a clock before the first input that uses them.
+// cfg_num_i 0 or above NumDisp means NumDisp, as candidates<NumDisp>(cfg) does.
+// cfg_sad_limit_i and cfg_texture_i are the C++ int fields, so one with bit 31 set (negative)
+// is off. DminBits <= 12: only d's low 12 bits reach the 16-bit d * 16.
+module scw_disparity_decide #(
+  parameter int unsigned NumDisp  /*verilator public*/ = 8,   // built candidates, 2 .. 128
+  parameter int unsigned SadBits  /*verilator public*/ = 12,  // one SAD and the texture sum
+  parameter int unsigned DminBits /*verilator public*/ = 8    // cfg_dmin_i, 1 .. 12
+) (
+  input  logic                         clk_i,
+  input  logic                         rst_ni,  // resets only the valid pipeline
+  input  logic [$clog2(NumDisp+1)-1:0] cfg_num_i,
+  input  logic [DminBits-1:0]          cfg_dmin_i,
+  input  logic [31:0]                  cfg_sad_limit_i,   // 0 = off: reject min SAD > limit
+  input  logic [31:0]                  cfg_texture_i,     // 0 = off: reject texture < it
+  input  logic [7:0]                   cfg_uniqueness_i,  // 0 = off: ratio in percent
+  input  logic                         cfg_subpixel_i,
+  input  logic [15:0]                  cfg_invalid_i,     // the invalid code
+  input  logic                         valid_i,
+  input  logic                         region_i,  // 0: the invalid code (outside the region)
+  input  logic [NumDisp*SadBits-1:0]   sad_i,     // candidate d at [d*SadBits +: SadBits]
+  input  logic [SadBits-1:0]           texture_i,
+  output logic                         valid_o,
+  output logic [15:0]                  disp_o
+);
+  localparam int unsigned NumW       = $clog2(NumDisp + 1);
+  localparam int unsigned Levels     = $clog2(NumDisp);
+  localparam int unsigned Leaves     = 1 << Levels;
+  localparam int unsigned IdxW       = Levels;
+  localparam int unsigned TreeStages = (Levels + 1) / 2;
+  localparam int unsigned SadW       = NumDisp * SadBits;
+  localparam int unsigned NodeW      = IdxW + 3 * SadBits;
+  localparam int unsigned ProdW      = SadBits + 8;  // p = m * U
+  localparam int unsigned QuarW      = ProdW - 2;    // floor(p / 4)
+  localparam int unsigned ThrW       = SadBits + 2;  // thresh <= 3.55 m
+  localparam int unsigned DispW      = 12;           // the bits of d that reach d * 16
+  localparam logic [63:0] QuarMax    = (((64'd1 << SadBits) - 64'd1) * 64'd255) >> 2;
+
+  // Smallest k with floor(x / 25) == (x * ceil(2^k / 25)) >> k for every x <= xmax. With
+  // e = 25 ceil(2^k / 25) - 2^k, x = 25 q + r: x ceil(2^k / 25) / 2^k = q + (r + x e / 2^k) / 25,
+  // below q + 1 for every r <= 24 when xmax e < 2^k. k = w + 5 always qualifies (e < 25 < 2^5).
+  function automatic int unsigned recip_shift(input int unsigned w, input logic [63:0] xmax);
+    logic [63:0] two_k, e;
+    recip_shift = w + 5;
+    for (int j = 5; j >= 0; j--) begin
+      two_k = 64'd1 << (w + 32'(j));
+      e     = ((two_k + 64'd24) / 64'd25) * 64'd25 - two_k;
+      if (xmax * e < two_k) recip_shift = w + 32'(j);
+    end
+  endfunction
+
+  /* verilator lint_off UNUSEDPARAM */
+  localparam int unsigned Latency    /*verilator public*/ = TreeStages + 4;
+  /* verilator lint_on UNUSEDPARAM */
+  localparam int unsigned RecipShift /*verilator public*/ = recip_shift(QuarW, QuarMax);
+  localparam int unsigned RecipMul   /*verilator public*/ =
+      32'(((64'd1 << RecipShift) + 64'd24) / 64'd25);
+  localparam int unsigned RecipW     = $clog2(RecipMul + 1);
+  localparam int unsigned MulW       = QuarW + RecipW;
+
+  if (NumDisp < 2 || NumDisp > 128) begin : gen_bad_num
+    $error("scw_disparity_decide: NumDisp must be 2 .. 128");
+  end
+  if (SadBits < 2 || SadBits > 24 || DminBits < 1 || DminBits > 12) begin : gen_bad_width
+    $error("scw_disparity_decide: need SadBits 2 .. 24 and DminBits 1 .. 12");
+  end
+
+  // ---- configuration --------------------------------------------------------------------
+  logic [NumW-1:0] n_eff;
+  logic [NumDisp-1:0] in_use;
+  logic num_over;
+  if ((1 << NumW) - 1 > NumDisp) begin : gen_num_over
+    assign num_over = cfg_num_i > NumW'(NumDisp);
+  end else begin : gen_num_fits  // NumDisp = 2^NumW - 1: no value above it
+    assign num_over = 1'b0;
+  end
+  assign n_eff = (cfg_num_i == '0 || num_over) ? NumW'(NumDisp) : cfg_num_i;
+  for (genvar d = 0; d < NumDisp; d++) begin : gen_in_use
+    assign in_use[d] = NumW'(d) < n_eff;
+  end
+
+  logic [NumDisp-1:0] in_use_q;
+  logic [IdxW-1:0] last_q;
+  logic [SadBits-1:0] lim_q, tex_q;
+  logic lim_en_q, tex_en_q, tex_all_q, uniq_en_q, sub_q;
+  logic [7:0] uniq_q;
+  logic [DminBits-1:0] dmin_q;
+  logic [15:0] invalid_q;
+  always_ff @(posedge clk_i) begin
+    in_use_q  <= in_use;
+    last_q    <= IdxW'(n_eff - 1'b1);
+    // A limit at or above 2^SadBits can never be exceeded.
+    lim_en_q  <= !cfg_sad_limit_i[31] && cfg_sad_limit_i != '0 &&
+                 cfg_sad_limit_i[30:SadBits] == '0;
+    lim_q     <= cfg_sad_limit_i[SadBits-1:0];
+    // A threshold at or above 2^SadBits rejects every texture sum.
+    tex_en_q  <= !cfg_texture_i[31] && cfg_texture_i != '0;
+    tex_all_q <= !cfg_texture_i[31] && cfg_texture_i[30:SadBits] != '0;
+    tex_q     <= cfg_texture_i[SadBits-1:0];
+    uniq_en_q <= cfg_uniqueness_i != '0;
+    uniq_q    <= cfg_uniqueness_i;
+    sub_q     <= cfg_subpixel_i;
+    dmin_q    <= cfg_dmin_i;
+    invalid_q <= cfg_invalid_i;
+  end
+
+  // ---- valid pipeline and the per-pixel side signals ------------------------------------
+  logic [Latency-1:0] valid_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_q <= '0;
+    else valid_q <= Latency'({valid_q, valid_i});
+  end
+  assign valid_o = valid_q[Latency-1];
+
+  // {region, texture rejected} travels beside the tree; the SADs wait for the uniqueness
+  // compare in stage C. Plain shifts without reset, so they map to SRLs.
+  logic tex_rej;
+  logic [2*TreeStages-1:0] side_q;
+  logic [(TreeStages+2)*SadW-1:0] sads_q;
+  assign tex_rej = tex_all_q || (tex_en_q && texture_i < tex_q);
+  always_ff @(posedge clk_i) begin
+    side_q <= (2 * TreeStages)'({side_q, region_i, tex_rej});
+    sads_q <= ((TreeStages + 2) * SadW)'({sads_q, sad_i});
+  end
+
+  // ---- t1 .. tT: argmin tree ------------------------------------------------------------
+  typedef struct packed {
+    logic [IdxW-1:0]    idx;
+    logic [SadBits-1:0] sad;   // all ones when the candidate is not in use
+    logic [SadBits-1:0] prev;  // sad[idx - 1]
+    logic [SadBits-1:0] next;  // sad[idx + 1]
+  } node_t;
+  localparam int unsigned NodeSad = 2 * SadBits;  // node_t's sad field
+
+  // Level 0 holds the leaves (candidate d at node d, padded to a power of two), level l the
+  // winners of pairs of level l - 1, level Levels the root. A candidate not in use (and a padding
+  // leaf) reads all ones: it has a larger d than every candidate in use, so it loses even a tie
+  // and the winner is always in use. One array per level, each level reading the one below by
+  // name (Yosys 0.23 resolves only names of generate blocks already elaborated, so the levels
+  // count up from the leaves): a single vector for the whole tree is circular logic to the
+  // simulator, and a wide vector per level costs it wide concatenations every clock.
+  for (genvar l = 0; l <= Levels; l++) begin : gen_lvl
+    localparam int unsigned Nodes = 1 << (Levels - l);
+    logic [NodeW-1:0] v [Nodes];
+    if (l == 0) begin : gen_leaves
+      for (genvar d = 0; d < Nodes; d++) begin : gen_leaf
+        logic [SadBits-1:0] sad, prev, next;
+        if (d < NumDisp) begin : gen_cand
+          assign sad = in_use_q[d] ? sad_i[d*SadBits +: SadBits] : '1;
+        end else begin : gen_pad
+          assign sad = '1;
+        end
+        if (d > 0 && d < NumDisp) begin : gen_prev
+          assign prev = sad_i[(d-1)*SadBits +: SadBits];
+        end else begin : gen_no_prev
+          assign prev = '0;
+        end
+        if (d + 1 < NumDisp) begin : gen_next
+          assign next = sad_i[(d+1)*SadBits +: SadBits];
+        end else begin : gen_no_next
+          assign next = '0;
+        end
+        assign v[d] = {IdxW'(d), sad, prev, next};
+      end
+    end else begin : gen_pairs
+      for (genvar k = 0; k < Nodes; k++) begin : gen_node
+        // Plain vectors: Yosys 0.23 cannot resolve a member of a struct declared in a generate
+        // block ("Failed to resolve identifier").
+        logic [NodeW-1:0] a, b, win;
+        assign a   = gen_lvl[l-1].v[2*k];
+        assign b   = gen_lvl[l-1].v[2*k+1];
+        // Strict <: on a tie the left child, the smaller d, wins, as in decide()'s loop.
+        assign win = (b[NodeSad +: SadBits] < a[NodeSad +: SadBits]) ? b : a;
+        // Registered every second level counted from the root, the root included.
+        if ((Levels - l) % 2 == 0) begin : gen_reg
+          always_ff @(posedge clk_i) v[k] <= win;
+        end else begin : gen_comb
+          assign v[k] = win;
+        end
+      end
+    end
+  end
+
+  node_t root;
+  logic t_region, t_tex_rej;
+  assign root = gen_lvl[Levels].v[0];
+  assign {t_region, t_tex_rej} = side_q[2*TreeStages-1 -: 2];
+
+  // ---- A: products, limits, the uniqueness mask, sub-pixel set-up -----------------------
+  logic [NumDisp-1:0] far;
+  logic [SadBits-1:0] pn, np, pm, nm;
+  logic neg;
+  for (genvar d = 0; d < NumDisp; d++) begin : gen_far
+    logic above, below;  // best > d + 1, best < d - 1 (constant where impossible)
+    if (d + 2 < Leaves) begin : gen_above
+      assign above = root.idx > IdxW'(d + 1);
+    end else begin : gen_no_above
+      assign above = 1'b0;
+    end
+    if (d >= 2) begin : gen_below
+      assign below = root.idx < IdxW'(d - 1);
+    end else begin : gen_no_below
+      assign below = 1'b0;
+    end
+    assign far[d] = uniq_en_q && in_use_q[d] && (above || below);
+  end
+  // Both differences and both distances to m at once, chosen by the sign: one carry chain deep.
+  assign neg = root.prev < root.next;
+  assign pn  = root.prev - root.next;
+  assign np  = root.next - root.prev;
+  assign pm  = root.prev - root.sad;
+  assign nm  = root.next - root.sad;
+
+  logic [QuarW-1:0] a_p4_q;
+  logic [SadBits-1:0] a_m_q, a_a_q, a_mx_q;
+  logic [DispW-1:0] a_d_q;
+  logic [NumDisp-1:0] a_far_q;
+  logic a_inv_q, a_fit_q, a_neg_q;
+  always_ff @(posedge clk_i) begin
+    a_p4_q   <= QuarW'((ProdW'(root.sad) * ProdW'(uniq_q)) >> 2);
+    a_m_q    <= root.sad;
+    a_inv_q  <= !t_region || t_tex_rej || (lim_en_q && root.sad > lim_q);
+    a_d_q    <= DispW'(dmin_q) + DispW'(root.idx);
+    a_fit_q  <= sub_q && root.idx != '0 && root.idx != last_q;
+    a_far_q  <= far;
+    a_neg_q  <= neg;
+    a_a_q    <= neg ? np : pn;
+    a_mx_q   <= neg ? nm : pm;
+  end
+
+  // One restoring division step: {quotient bit, remainder} of 2 r / mx, given r <= mx.
+  function automatic logic [SadBits:0] div_step(input logic [SadBits-1:0] r,
+                                                input logic [SadBits-1:0] mx);
+    logic [SadBits:0] t;
+    t = {r, 1'b0};
+    if (t >= {1'b0, mx}) div_step = {1'b1, SadBits'(t - {1'b0, mx})};
+    else div_step = {1'b0, t[SadBits-1:0]};
+  endfunction
+
+  // ---- B: floor(p / 100), quotient bits 2 and 1 -----------------------------------------
+  logic [SadBits:0] b_s2, b_s1;
+  assign b_s2 = div_step(a_a_q, a_mx_q);
+  assign b_s1 = div_step(b_s2[SadBits-1:0], a_mx_q);
+
+  logic [ThrW-1:0] b_q100_q;
+  logic [SadBits-1:0] b_m_q, b_r_q, b_mx_q;
+  logic [DispW-1:0] b_d_q, b_dm1_q;
+  logic [NumDisp-1:0] b_far_q;
+  logic [1:0] b_qhi_q;
+  logic b_inv_q, b_fit_q, b_neg_q;
+  always_ff @(posedge clk_i) begin
+    b_q100_q <= ThrW'((MulW'(a_p4_q) * MulW'(RecipMul)) >> RecipShift);
+    b_m_q    <= a_m_q;
+    b_inv_q  <= a_inv_q;
+    b_d_q    <= a_d_q;
+    b_dm1_q  <= a_d_q - 1'b1;
+    b_fit_q  <= a_fit_q;
+    b_far_q  <= a_far_q;
+    b_neg_q  <= a_neg_q;
+    b_qhi_q  <= {b_s2[SadBits], b_s1[SadBits]};
+    b_r_q    <= b_s1[SadBits-1:0];
+    b_mx_q   <= a_mx_q;
+  end
+
+  // ---- C: the uniqueness compare, quotient bit 0, the low bits --------------------------
+  logic [ThrW-1:0] thresh;
+  logic [NumDisp-1:0] urej;
+  logic [SadBits:0] c_s0;
+  logic c_low;
+  assign thresh = ThrW'(b_m_q) + b_q100_q;
+  for (genvar d = 0; d < NumDisp; d++) begin : gen_urej
+    assign urej[d] = b_far_q[d] &&
+                     ThrW'(sads_q[(TreeStages+1)*SadW + d*SadBits +: SadBits]) <= thresh;
+  end
+  assign c_s0  = div_step(b_r_q, b_mx_q);
+  // q mod 16 != 0  <=>  16 r >= mx, r the remainder after the three steps.
+  assign c_low = {c_s0[SadBits-1:0], 4'b0} >= {4'b0, b_mx_q};
+
+  logic [NumDisp-1:0] c_urej_q;
+  logic [DispW-1:0] c_d_q, c_dm1_q;
+  logic [2:0] c_qhi_q;
+  logic c_inv_q, c_fit_q, c_neg_q, c_low_q;
+  always_ff @(posedge clk_i) begin
+    c_urej_q <= urej;
+    c_inv_q  <= b_inv_q;
+    c_d_q    <= b_d_q;
+    c_dm1_q  <= b_dm1_q;
+    c_fit_q  <= b_fit_q;
+    c_neg_q  <= b_neg_q;
+    c_qhi_q  <= {b_qhi_q, c_s0[SadBits]};
+    c_low_q  <= c_low;
+  end
+
+  // ---- D: the value ---------------------------------------------------------------------
+  logic [4:0] adj;  // (frac + 15) >>> 4, -7 .. 8
+  logic [15:0] value, disp_q;
+  assign adj   = c_neg_q ? -{2'b0, c_qhi_q} : {2'b0, c_qhi_q} + 5'(c_low_q);
+  assign value = !c_fit_q ? {c_d_q, 4'b0} : {adj[4] ? c_dm1_q : c_d_q, adj[3:0]};
+  always_ff @(posedge clk_i) begin
+    disp_q <= (c_inv_q || |c_urej_q) ? invalid_q : value;
+  end
+  assign disp_o = disp_q;
+endmodule

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: Apache-2.0
+// Self-checking replay of a disparity golden vector set against scw_disparity: left and right
+// pixels driven with their own idle cycles, output backpressure, every output beat compared.
+`timescale 1ns / 1ps
+`default_nettype none
+
+// Run with the set's manifest.json config as plusargs: +vectors=<set folder> +width +height
+// +dmin +num_disp +prefilter +cap +sad_limit +texture +uniqueness +subpixel +opencv_invalid.
+// Parameters: config.ppc, max_width_px, max_height, window, num_disp (built candidates) and the
+// hex files' meta.beats (all three files of a set have W * H / Ppc beats).
+module tb_disparity_replay #(
+  parameter int unsigned Ppc        = 2,
+  parameter int unsigned MaxWidthPx = 128,
+  parameter int unsigned MaxHeight  = 64,
+  parameter int unsigned Window     = 5,
+  parameter int unsigned NumDisp    = 16,
+  parameter int unsigned Beats      = 768
+);
+  localparam int unsigned BeatW = Ppc * 8;
+  localparam int unsigned OutW  = Ppc * 16;
+  localparam int unsigned WW    = $clog2(MaxWidthPx + 1);
+  localparam int unsigned HW    = $clog2(MaxHeight + 1);
+  localparam int unsigned NumW  = $clog2(NumDisp + 1);
+
+  logic [BeatW+1:0] l_mem   [Beats];  // {eol, sof, px[Ppc-1..0]}
+  logic [BeatW+1:0] r_mem   [Beats];
+  logic [OutW+1:0]  exp_mem [Beats];
+  string dir;
+  int unsigned width, height, dmin, num_disp, prefilter, cap, sad_limit, texture, uniqueness;
+  int unsigned subpixel, opencv_invalid;
+  initial begin
+    if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
+        !$value$plusargs("dmin=%d", dmin) || !$value$plusargs("num_disp=%d", num_disp) ||
+        !$value$plusargs("prefilter=%d", prefilter) || !$value$plusargs("cap=%d", cap) ||
+        !$value$plusargs("sad_limit=%d", sad_limit) || !$value$plusargs("texture=%d", texture) ||
+        !$value$plusargs("uniqueness=%d", uniqueness) ||
+        !$value$plusargs("subpixel=%d", subpixel) ||
+        !$value$plusargs("opencv_invalid=%d", opencv_invalid))
+      $fatal(1, "give the set's config: +width +height +dmin +num_disp +prefilter +cap ",
+             "+sad_limit +texture +uniqueness +subpixel +opencv_invalid");
+    if (width * height / Ppc != Beats)
+      $fatal(1, "%0d x %0d at %0d px per beat is not %0d beats", width, height, Ppc, Beats);
+    $readmemh({dir, "/left.hex"}, l_mem);
+    $readmemh({dir, "/right.hex"}, r_mem);
+    $readmemh({dir, "/expected.hex"}, exp_mem);
+  end
+
+  logic clk = 1'b0, rst_n = 1'b0;
+  always #4 clk = ~clk;  // 125 MHz
+  initial #20 rst_n = 1'b1;
+
+  int unsigned cyc = 0;
+  always_ff @(posedge clk) cyc <= cyc + 1;
+
+  // Left source: offers on 3 of 4 cycles; right source on 4 of 5, out of step. A beat is held
+  // until taken (the stage takes both sides together).
+  int unsigned i = 0, j = 0;
+  logic l_valid, l_ready, l_held = 1'b0, r_valid, r_ready, r_held = 1'b0;
+  logic [BeatW+1:0] l_beat, r_beat;
+  assign l_valid = rst_n && (i < Beats) && (((cyc % 4) != 3) || l_held);
+  assign r_valid = rst_n && (j < Beats) && (((cyc % 5) != 2) || r_held);
+  assign l_beat  = l_mem[(i < Beats) ? i : 0];
+  assign r_beat  = r_mem[(j < Beats) ? j : 0];
+  always_ff @(posedge clk) begin
+    l_held <= l_valid && !l_ready;
+    r_held <= r_valid && !r_ready;
+    if (l_valid && l_ready) i <= i + 1;
+    if (r_valid && r_ready) j <= j + 1;
+  end
+
+  // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each output must be the next expected line.
+  int unsigned o = 0;
+  logic out_valid, out_ready, out_sof, out_eol, err;
+  logic [OutW-1:0] out_data;
+  assign out_ready = (cyc % 7) inside {0, 1, 3, 6};
+
+  scw_disparity #(
+    .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Window(Window),
+    .NumDisp(NumDisp)
+  ) u_dut (
+    .clk_i(clk), .rst_ni(rst_n),
+    .cfg_width_i(WW'(width)), .cfg_height_i(HW'(height)), .cfg_dmin_i(WW'(dmin)),
+    .cfg_num_disp_i(NumW'(num_disp)), .cfg_prefilter_i(prefilter != 0), .cfg_cap_i(6'(cap)),
+    .cfg_sad_limit_i(sad_limit), .cfg_texture_i(texture), .cfg_uniqueness_i(8'(uniqueness)),
+    .cfg_subpixel_i(subpixel != 0), .cfg_opencv_invalid_i(opencv_invalid != 0),
+    .l_valid_i(l_valid), .l_ready_o(l_ready), .l_data_i(l_beat[BeatW-1:0]),
+    .l_sof_i(l_beat[BeatW]), .l_eol_i(l_beat[BeatW+1]),
+    .r_valid_i(r_valid), .r_ready_o(r_ready), .r_data_i(r_beat[BeatW-1:0]),
+    .r_sof_i(r_beat[BeatW]), .r_eol_i(r_beat[BeatW+1]),
+    .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
+    .out_sof_o(out_sof), .out_eol_o(out_eol), .err_o(err)
+  );
+
+  initial #(Beats * 8 * 40 + 100000) $fatal(1, "timeout after %0d of %0d beats (%0d, %0d in)",
+                                            o, Beats, i, j);
+  always_ff @(posedge clk) begin
+    if (err) $fatal(1, "err_o on a well-formed frame (cycle %0d)", cyc);
+    if (out_valid && out_ready) begin
+      if ({out_eol, out_sof, out_data} !== exp_mem[o])
+        $fatal(1, "beat %0d (row %0d): got %h, expected %h", o, o / (width / Ppc),
+               {out_eol, out_sof, out_data}, exp_mem[o]);
+      o <= o + 1;
+      if (o + 1 == Beats) begin
+        if (i != Beats || j != Beats)
+          $fatal(1, "frame out, but only %0d left and %0d right beats taken of %0d", i, j,
+                 Beats);
+        $display("PASS: %0d beats match %s", Beats, dir);
+        $finish;
+      end
+    end
+  end
+endmodule
