@@ -10,6 +10,7 @@
 #   --max-ff N      flip-flop limit for --expect-bram (default 200)
 #   --cells         print every cell type and count, not only the summary
 #   --no-ltp        skip the logic-depth measurement (ltp) on very large designs
+#   --path FILE     write the deepest path (ltp, cut at DSPs) cell by cell to FILE
 #
 # Reads the files listed by scripts/rtl_lint.sh --files <module>, applies the parameters
 # with chparam, runs `synth_xilinx -flatten -top <module>`, `stat`, and `ltp -noff` with
@@ -24,7 +25,7 @@ set -euo pipefail
 
 usage() {
   echo "usage: scripts/rtl_synth.sh <module> [Param=value ...] [--log FILE] [--expect-bram]" \
-    "[--max-ff N] [--cells] [--no-ltp]" >&2
+    "[--max-ff N] [--cells] [--no-ltp] [--path FILE]" >&2
   exit 2
 }
 
@@ -38,6 +39,7 @@ expect_bram=0
 max_ff=200
 show_cells=0
 run_ltp=1
+path_out=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --log) [[ $# -ge 2 ]] || usage; log="$2"; shift 2 ;;
@@ -47,6 +49,7 @@ while [[ $# -gt 0 ]]; do
     --max-ff=*) max_ff="${1#--max-ff=}"; shift ;;
     --cells) show_cells=1; shift ;;
     --no-ltp) run_ltp=0; shift ;;
+    --path) [[ $# -ge 2 ]] || usage; path_out="$2"; shift 2 ;;
     -h|--help) usage ;;
     -*) echo "rtl_synth: unknown option $1" >&2; usage ;;
     *=*)
@@ -167,6 +170,7 @@ if [[ $run_ltp -eq 1 ]]; then
   levels="$(sed -n 's/.*Longest topological path.*(length=\([0-9]*\)).*/\1/p' "$work/ltp.txt" \
     | head -n 1)"
   [[ -n "$levels" ]] || levels="0"
+  [[ -z "$path_out" ]] || cp "$work/ltp_dsp.txt" "$path_out"
   if grep -q 'Detected loop' "$work/ltp.txt"; then
     echo "rtl_synth: ${label}: WARNING: ltp found a combinational loop (see ltp in the log)" >&2
     levels="${levels}(loop)"
