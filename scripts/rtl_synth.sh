@@ -19,7 +19,7 @@
 #   logic_levels=.. logic_levels_dsp_cut=.. yosys_s=..
 # LUT counts LUT1..LUT6 (and LUT6_2), FF counts FD* cells, logic_levels is the longest
 # register-to-register (or port) path in cells (Yosys `ltp`: LUTs, CARRY4s, MUXF7/8 each
-# count one); logic_levels_dsp_cut also cuts paths at DSP48E1s, whose packed pipeline registers
+# count one; flip-flops, SRL shift registers and block RAMs end a path); logic_levels_dsp_cut also cuts paths at DSP48E1s, whose packed pipeline registers
 # ltp cannot see. Environment: YOSYS (default: yosys on PATH). Needs only bash, grep, sed, awk.
 set -euo pipefail
 
@@ -118,10 +118,10 @@ done
   if [[ $run_ltp -eq 1 ]]; then
     # Xilinx flip-flops are not "FF cell types" to ltp -noff (those are Yosys' internal
     # $_DFF_*), so select them away, with block RAMs (registered) and I/O buffers.
-    echo "tee -q -o ltp.txt ltp -noff t:FD* t:RAMB* t:IBUF t:OBUF t:BUFG %u %u %u %u %n"
+    echo "tee -q -o ltp.txt ltp -noff t:FD* t:SRL* t:RAMB* t:IBUF t:OBUF t:BUFG %u %u %u %u %u %n"
     # The same with DSP48E1s cut too: Yosys packs pipeline registers into the DSPs (A/B/P
     # registers), and ltp walks through a DSP as if it were logic.
-    echo "tee -q -o ltp_dsp.txt ltp -noff t:FD* t:RAMB* t:IBUF t:OBUF t:BUFG t:DSP48E1 %u %u %u %u %u %n"
+    echo "tee -q -o ltp_dsp.txt ltp -noff t:FD* t:SRL* t:RAMB* t:IBUF t:OBUF t:BUFG t:DSP48E1 %u %u %u %u %u %u %n"
   fi
 } > "$work/synth.ys"
 
