@@ -106,7 +106,7 @@ struct BeatLayout<hls::rectify::MapBeat<P, CB>> {
   static bool eol(const beat_t& b) { return b.eol; }
 };
 
-/// The whole word: payload in the low bits, then sof, then eol.
+/// The whole word: payload in the low bits, then sof, then eol; a packet's payload, then last.
 template <typename B>
 Bits pack(const B& b) {
   using L = BeatLayout<B>;
@@ -116,8 +116,12 @@ Bits pack(const B& b) {
     const int n = std::min(32, L::kPayloadBits - lsb);
     w.set(lsb, n, p.get(lsb, n));
   }
-  w.set(L::kPayloadBits, 1, L::sof(b));
-  w.set(L::kPayloadBits + 1, 1, L::eol(b));
+  if constexpr (hls::detail::has_last<B>::value) {
+    w.set(L::kPayloadBits, 1, b.last);
+  } else {
+    w.set(L::kPayloadBits, 1, L::sof(b));
+    w.set(L::kPayloadBits + 1, 1, L::eol(b));
+  }
   return w;
 }
 
@@ -129,7 +133,12 @@ B unpack(const Bits& w) {
     const int n = std::min(32, L::kPayloadBits - lsb);
     p.set(lsb, n, w.get(lsb, n));
   }
-  return L::from_payload(p, w.get(L::kPayloadBits, 1) != 0, w.get(L::kPayloadBits + 1, 1) != 0);
+  if constexpr (hls::detail::has_last<B>::value) {
+    return L::from_payload(p, w.get(L::kPayloadBits, 1) != 0);
+  } else {
+    return L::from_payload(p, w.get(L::kPayloadBits, 1) != 0,
+                           w.get(L::kPayloadBits + 1, 1) != 0);
+  }
 }
 
 }  // namespace scw::sim

@@ -20,11 +20,16 @@ template <typename M>
 struct has_flag_ports<M, std::void_t<decltype(std::declval<M&>().in_sof_i)>> : std::true_type {};
 }  // namespace detail
 
-/// Reads a stage's out_data_o/out_sof_o/out_eol_o as a beat.
+/// Reads a stage's out_data_o/out_sof_o/out_eol_o as a beat, or out_data_o/out_last_o as a
+/// packet.
 template <typename Out, typename VM>
 Out read_stage_out(const VM& m) {
-  return BeatLayout<Out>::from_payload(
-      Bits::from_port(m.out_data_o, BeatLayout<Out>::kPayloadBits), m.out_sof_o, m.out_eol_o);
+  const Bits data = Bits::from_port(m.out_data_o, BeatLayout<Out>::kPayloadBits);
+  if constexpr (hls::detail::has_last<Out>::value) {
+    return BeatLayout<Out>::from_payload(data, m.out_last_o);
+  } else {
+    return BeatLayout<Out>::from_payload(data, m.out_sof_o, m.out_eol_o);
+  }
 }
 
 /// Binds the common port shape (in_valid_i/in_ready_o/in_data_i, out_valid_o/out_ready_i/

@@ -128,14 +128,13 @@ class OutputCheck {
   Bits prev_out_;
 };
 
-/// Drives `model` with `beats` under `pattern` until `expected_out` beats have come out or
-/// `max_cycles` pass, checking the handshake rules every cycle (OutputCheck).
+/// Drives `model` with `beats` under `pattern` until all are sent and `enough(outputs so far)`
+/// holds, or `max_cycles` pass, checking the handshake rules every cycle (OutputCheck).
 template <typename Model>
-RunResult<typename Model::out_type> run_stream(Model& model,
-                                               std::vector<typename Model::in_type> beats,
-                                               const StallPattern& pattern,
-                                               std::size_t expected_out,
-                                               std::int64_t max_cycles = 1'000'000) {
+RunResult<typename Model::out_type> run_stream_until(
+    Model& model, std::vector<typename Model::in_type> beats, const StallPattern& pattern,
+    const std::function<bool(const std::vector<typename Model::out_type>&)>& enough,
+    std::int64_t max_cycles = 1'000'000) {
   using In = typename Model::in_type;
   using Out = typename Model::out_type;
   RunResult<Out> r;
@@ -143,7 +142,7 @@ RunResult<typename Model::out_type> run_stream(Model& model,
   StreamDriver<In> drv(std::move(beats), pattern);
   StreamMonitor<Out> mon(pattern);
   for (std::int64_t c = 0; c < max_cycles; ++c) {
-    if (drv.done() && r.out.size() >= expected_out) {
+    if (drv.done() && enough(r.out)) {
       r.cycles = c;
       return r;
     }
@@ -160,6 +159,21 @@ RunResult<typename Model::out_type> run_stream(Model& model,
   r.timed_out = true;
   r.cycles = max_cycles;
   return r;
+}
+
+/// run_stream_until `expected_out` beats have come out.
+template <typename Model>
+RunResult<typename Model::out_type> run_stream(Model& model,
+                                               std::vector<typename Model::in_type> beats,
+                                               const StallPattern& pattern,
+                                               std::size_t expected_out,
+                                               std::int64_t max_cycles = 1'000'000) {
+  return run_stream_until(
+      model, std::move(beats), pattern,
+      [expected_out](const std::vector<typename Model::out_type>& out) {
+        return out.size() >= expected_out;
+      },
+      max_cycles);
 }
 
 /// run_stream for a source: `run` follows the input side of `pattern` (idle cycles drop run),

@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: Apache-2.0
+// Labelling stage: compile-time capacities, run-time configuration, the join rule and the
+// object descriptor the stage emits (docs/labelling.md).
+#pragma once
+
+#include <cstdint>
+
+#include "hls/common/beat.hpp"
+
+namespace scw::hls::labelling {
+
+/// One input disparity, Q11.4 in 16 bits as the disparity stage emits it.
+using disp_t = std::uint16_t;
+
+/// Built-in capacities of one stage. One pixel per beat. The image is cut into tiles; each tile
+/// numbers its own objects with a table of LabelsPerTile labels, and a frame may report up to
+/// MaxObjects objects.
+template <int MaxWidthPx, int MaxHeight, int MaxTilesX, int MaxTilesY, int LabelsPerTile,
+          int MaxObjects>
+struct LabellingParams {
+  static constexpr int kMaxWidthPx = MaxWidthPx;
+  static constexpr int kMaxHeight = MaxHeight;
+  static constexpr int kMaxTilesX = MaxTilesX;
+  static constexpr int kMaxTilesY = MaxTilesY;
+  static constexpr int kLabelsPerTile = LabelsPerTile;
+  static constexpr int kMaxObjects = MaxObjects;
+  /// Nodes: every (tile, label) pair; node = (ty * MaxTilesX + tx) * LabelsPerTile + label.
+  static constexpr int kNodes = MaxTilesX * MaxTilesY * LabelsPerTile;
+  using in_beat = Beat<disp_t, 1>;
+  static_assert(MaxWidthPx >= 2 && MaxHeight >= 1, "an image of at least 2 x 1");
+  static_assert(MaxWidthPx <= 65535 && MaxHeight <= 65535, "coordinates travel in 16 bits");
+  static_assert(MaxTilesX >= 1 && MaxTilesY >= 1 && LabelsPerTile >= 1 && MaxObjects >= 1,
+                "capacities are at least 1");
+};
+
+/// Run-time configuration (the RTL's cfg_* ports), stable while frames stream.
+struct LabellingConfig {
+  int width = 0;     // pixels, <= MaxWidthPx
+  int height = 0;    // rows, <= MaxHeight
+  int tile_w = 0;    // tile size in pixels: ceil(width / tile_w) <= MaxTilesX tile columns
+  int tile_h = 0;    //   and ceil(height / tile_h) <= MaxTilesY tile rows; the last tile of a
+                     //   row or column may be smaller
+  int floor = 0;     // background: a pixel is valid when 0 < d (as int16) and d > floor
+                     // (Q11.4; set it to the disparity stage's invalid code when that is > 0)
+  int min_area = 1;  // objects with fewer pixels are not reported
+};
+
+/// The thesis's join (eq. 3.10 with absolute difference): two valid 4-neighbours join when
+/// 10 |d_cur - d_nb| < d_cur, d_cur being the pixel later in raster order. Exact in integers.
+constexpr bool joins(disp_t d_cur, disp_t d_nb) {
+  const int diff = static_cast<int>(d_cur) - static_cast<int>(d_nb);
+  return 10 * (diff < 0 ? -diff : diff) < static_cast<int>(d_cur);
+}
+
+/// Whether a disparity is an object pixel under `cfg` (docs/labelling.md).
+constexpr bool is_valid(disp_t d, const LabellingConfig& cfg) {
+  return d != 0 && d < 0x8000u && static_cast<int>(d) > cfg.floor;
+}
+
+/// One object: u = column, v = row, pixel coordinates from 0 at the top left.
+struct Object {
+  std::uint32_t area = 0;                      // pixels
+  std::uint16_t x_min = 0, x_max = 0, y_min = 0, y_max = 0;  // bounding box, inclusive
+  std::uint16_t d_min = 0, d_max = 0;          // Q11.4
+  std::uint16_t closest_x = 0, closest_y = 0;  // first pixel in raster order holding d_max
+  std::uint16_t first_x = 0, first_y = 0;      // first pixel in raster order
+  // Raw moments m_pq = sum u^p v^q, p + q <= 3 (m00 = area).
+  std::uint64_t m10 = 0, m01 = 0, m20 = 0, m11 = 0, m02 = 0, m30 = 0, m21 = 0, m12 = 0, m03 = 0;
+
+  friend bool operator==(const Object& a, const Object& b) {
+    return a.area == b.area && a.x_min == b.x_min && a.x_max == b.x_max && a.y_min == b.y_min &&
+           a.y_max == b.y_max && a.d_min == b.d_min && a.d_max == b.d_max &&
+           a.closest_x == b.closest_x && a.closest_y == b.closest_y && a.first_x == b.first_x &&
+           a.first_y == b.first_y && a.m10 == b.m10 && a.m01 == b.m01 && a.m20 == b.m20 &&
+           a.m11 == b.m11 && a.m02 == b.m02 && a.m30 == b.m30 && a.m21 == b.m21 &&
+           a.m12 == b.m12 && a.m03 == b.m03;
+  }
+  friend bool operator!=(const Object& a, const Object& b) { return !(a == b); }
+};
+
+/// The descriptor of one pixel (u, v) with disparity d: an object of one pixel.
+constexpr Object pixel_object(int u, int v, disp_t d) {
+  Object o;
+  const auto x = static_cast<std::uint16_t>(u), y = static_cast<std::uint16_t>(v);
+  const std::uint64_t uu = static_cast<std::uint64_t>(u), vv = static_cast<std::uint64_t>(v);
+  o.area = 1;
+  o.x_min = o.x_max = o.closest_x = o.first_x = x;
+  o.y_min = o.y_max = o.closest_y = o.first_y = y;
+  o.d_min = o.d_max = d;
+  o.m10 = uu;
+  o.m01 = vv;
+  o.m20 = uu * uu;
+  o.m11 = uu * vv;
+  o.m02 = vv * vv;
+  o.m30 = uu * uu * uu;
+  o.m21 = uu * uu * vv;
+  o.m12 = uu * vv * vv;
+  o.m03 = vv * vv * vv;
+  return o;
+}
+
+/// The descriptor of the union of two disjoint pixel sets. Symmetric; ties in the closest and
+/// first points go to the earlier pixel in raster order.
+constexpr Object merge(const Object& a, const Object& b) {
+  auto before = [](int ya, int xa, int yb, int xb) { return ya < yb || (ya == yb && xa < xb); };
+  auto mn = [](std::uint16_t p, std::uint16_t q) { return p < q ? p : q; };
+  auto mx = [](std::uint16_t p, std::uint16_t q) { return p > q ? p : q; };
+  Object o;
+  o.area = a.area + b.area;
+  o.x_min = mn(a.x_min, b.x_min);
+  o.x_max = mx(a.x_max, b.x_max);
+  o.y_min = mn(a.y_min, b.y_min);
+  o.y_max = mx(a.y_max, b.y_max);
+  o.d_min = mn(a.d_min, b.d_min);
+  o.d_max = mx(a.d_max, b.d_max);
+  const bool a_closest = a.d_max > b.d_max ||
+                         (a.d_max == b.d_max &&
+                          before(a.closest_y, a.closest_x, b.closest_y, b.closest_x));
+  o.closest_x = a_closest ? a.closest_x : b.closest_x;
+  o.closest_y = a_closest ? a.closest_y : b.closest_y;
+  const bool a_first = before(a.first_y, a.first_x, b.first_y, b.first_x);
+  o.first_x = a_first ? a.first_x : b.first_x;
+  o.first_y = a_first ? a.first_y : b.first_y;
+  o.m10 = a.m10 + b.m10;
+  o.m01 = a.m01 + b.m01;
+  o.m20 = a.m20 + b.m20;
+  o.m11 = a.m11 + b.m11;
+  o.m02 = a.m02 + b.m02;
+  o.m30 = a.m30 + b.m30;
+  o.m21 = a.m21 + b.m21;
+  o.m12 = a.m12 + b.m12;
+  o.m03 = a.m03 + b.m03;
+  return o;
+}
+
+/// The frame's closing word.
+struct FrameStatus {
+  std::uint32_t objects = 0;     // objects reported in this frame
+  bool tile_overflow = false;    // a tile needed more than LabelsPerTile labels
+  bool object_overflow = false;  // more than MaxObjects objects reached MinArea
+  bool stream_error = false;     // the input broke the frame geometry (docs/streaming.md)
+
+  friend bool operator==(const FrameStatus& a, const FrameStatus& b) {
+    return a.objects == b.objects && a.tile_overflow == b.tile_overflow &&
+           a.object_overflow == b.object_overflow && a.stream_error == b.stream_error;
+  }
+};
+
+/// One word of the output burst: the frame's objects, then its status (with `last`).
+struct LabelWord {
+  bool is_status = false;
+  Object object;       // when !is_status
+  FrameStatus status;  // when is_status
+
+  friend bool operator==(const LabelWord& a, const LabelWord& b) {
+    return a.is_status == b.is_status &&
+           (a.is_status ? a.status == b.status : a.object == b.object);
+  }
+  friend bool operator!=(const LabelWord& a, const LabelWord& b) { return !(a == b); }
+};
+
+using LabelPacket = Packet<LabelWord>;
+
+}  // namespace scw::hls::labelling

@@ -1,0 +1,3 @@
+# SPDX-License-Identifier: Apache-2.0
+# The labelling model run over whole maps (segment()) for the CLI, vectors and real-data checks.
+target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/labelling/run_model.cpp)

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: Apache-2.0
+// segment(): a disparity map through the labelling model, then the second pass.
+#include "host/labelling/run_model.hpp"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "hls/labelling/labelling.hpp"
+#include "sim/labelling_model.hpp"
+
+namespace scw::labelling {
+namespace {
+
+using HostParams = hls::labelling::LabellingParams<kHostMaxWidthPx, kHostMaxHeight, kHostMaxTiles,
+                                                   kHostMaxTiles, kHostLabelsPerTile,
+                                                   kHostMaxObjects>;
+
+std::vector<HostParams::in_beat> frame_beats(const cv::Mat& d) {
+  std::vector<HostParams::in_beat> beats;
+  beats.reserve(d.total());
+  for (int y = 0; y < d.rows; ++y)
+    for (int x = 0; x < d.cols; ++x) {
+      HostParams::in_beat b;
+      b.px[0] = d.at<std::uint16_t>(y, x);
+      b.sof = x == 0 && y == 0;
+      b.eol = x == d.cols - 1;
+      beats.push_back(b);
+    }
+  return beats;
+}
+
+}  // namespace
+
+LabellingConfig grid_config(int width, int height, int tiles_x, int tiles_y, int floor,
+                            int min_area) {
+  if (tiles_x < 1 || tiles_y < 1)
+    throw std::invalid_argument("labelling: a tile grid needs at least 1 x 1 tiles");
+  LabellingConfig c;
+  c.width = width;
+  c.height = height;
+  c.tile_w = (width + tiles_x - 1) / tiles_x;
+  c.tile_h = (height + tiles_y - 1) / tiles_y;
+  c.floor = floor;
+  c.min_area = min_area;
+  return c;
+}
+
+Segmentation segment(const cv::Mat& disp_q4, const LabellingConfig& cfg) {
+  if (disp_q4.empty() || disp_q4.type() != CV_16UC1)
+    throw std::invalid_argument(
+        "labelling: the disparity map must be one 16-bit channel of disparity x 16");
+  if (disp_q4.cols != cfg.width || disp_q4.rows != cfg.height)
+    throw std::invalid_argument("labelling: the configuration is for " +
+                                std::to_string(cfg.width) + " x " + std::to_string(cfg.height) +
+                                ", the map is " + std::to_string(disp_q4.cols) + " x " +
+                                std::to_string(disp_q4.rows));
+  hls::labelling::check_config<HostParams>(cfg);  // names the field out of range
+
+  using Model = sim::LabellingModel<HostParams>;
+  const auto model = std::make_unique<Model>(cfg);  // descriptor RAMs: keep them off the stack
+  auto& k = model->kernel();
+  std::vector<std::int32_t> node_map(disp_q4.total(), 0);
+  k.set_node_map(&node_map);
+  while (k.phase() == Model::Kernel::kInit) model->tick();
+
+  const auto beats = frame_beats(disp_q4);
+  Segmentation s;
+  std::size_t next = 0;
+  const std::int64_t limit = 64 * static_cast<std::int64_t>(beats.size()) + 4 * HostParams::kNodes;
+  for (std::int64_t c = 0;; ++c) {
+    if (c > limit) throw std::logic_error("labelling: the model did not finish the frame");
+    const bool valid = next < beats.size();
+    const auto o = model->eval(valid, valid ? beats[next] : HostParams::in_beat{}, true);
+    model->tick();
+    if (valid && o.in_ready) ++next;
+    if (!o.out_valid) continue;
+    if (!o.out.data.is_status) {
+      s.objects.push_back(o.out.data.object);
+      continue;
+    }
+    s.status = o.out.data.status;
+    s.cycles = c + 1;
+    break;
+  }
+  if (s.status.stream_error) throw std::logic_error("labelling: the model flagged a stream error");
+
+  // Second pass: each reported object is found through its first pixel's root; objects are
+  // numbered in raster order of their first pixel.
+  s.objects_by_label = s.objects;
+  std::sort(s.objects_by_label.begin(), s.objects_by_label.end(),
+            [](const Object& a, const Object& b) {
+              return a.first_y != b.first_y ? a.first_y < b.first_y : a.first_x < b.first_x;
+            });
+  std::map<int, std::uint16_t> label_of_root;
+  for (std::size_t i = 0; i < s.objects_by_label.size(); ++i) {
+    const Object& o = s.objects_by_label[i];
+    const int node1 = node_map[static_cast<std::size_t>(o.first_y) * disp_q4.cols + o.first_x];
+    label_of_root[k.root(node1 - 1)] = static_cast<std::uint16_t>(std::min<std::size_t>(i + 1, 65535));
+  }
+  s.labels = cv::Mat::zeros(disp_q4.size(), CV_16UC1);
+  for (int y = 0; y < disp_q4.rows; ++y)
+    for (int x = 0; x < disp_q4.cols; ++x) {
+      const int node1 = node_map[static_cast<std::size_t>(y) * disp_q4.cols + x];
+      if (node1 == 0) continue;
+      const auto it = label_of_root.find(k.root(node1 - 1));
+      if (it != label_of_root.end()) s.labels.at<std::uint16_t>(y, x) = it->second;
+    }
+  return s;
+}
+
+}  // namespace scw::labelling

@@ -1,0 +1,7 @@
+# SPDX-License-Identifier: Apache-2.0
+# [hls] The labelling model against the flood-fill reference.
+add_executable(test_labelling_hls labelling/test_labelling_hls.cpp)
+target_link_libraries(test_labelling_hls PRIVATE scw_test_main scw::sim scw::host)
+target_compile_definitions(test_labelling_hls PRIVATE SCW_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
+scw_warnings(test_labelling_hls)
+catch_discover_tests(test_labelling_hls TEST_PREFIX "labelling:")

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: Apache-2.0
+// Runs labelling frames through any cycle model (C++ or RTL) and checks them against the
+// flood-fill reference: shared by the [hls] and [rtl] tests.
+#pragma once
+
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <vector>
+
+#include "hls/labelling/labelling_params.hpp"
+#include "host/reference/labelling_ref.hpp"
+#include "sim/frame_beats.hpp"
+#include "sim/labelling_pack.hpp"
+#include "sim/stream_check.hpp"
+#include "tests/labelling/labelling_maps.hpp"
+
+namespace scw::test {
+
+using hls::labelling::FrameStatus;
+using hls::labelling::LabelPacket;
+using hls::labelling::LabellingConfig;
+using hls::labelling::Object;
+using InBeat = hls::Beat<std::uint16_t, 1>;
+
+/// One frame's output burst, split.
+struct FrameOut {
+  std::vector<Object> objects;
+  FrameStatus status;
+};
+
+/// Splits a packet stream into frames; fails the test if a frame's burst is malformed.
+inline std::vector<FrameOut> split_frames(const std::vector<LabelPacket>& out) {
+  std::vector<FrameOut> frames(1);
+  for (const auto& p : out) {
+    if (p.data.is_status) {
+      CHECK(p.last);
+      frames.back().status = p.data.status;
+      frames.emplace_back();
+    } else {
+      CHECK_FALSE(p.last);
+      frames.back().objects.push_back(p.data.object);
+    }
+  }
+  frames.pop_back();
+  return frames;
+}
+
+inline std::vector<Object> raster_sorted(std::vector<Object> v) {
+  std::sort(v.begin(), v.end(), [](const Object& a, const Object& b) {
+    return a.first_y != b.first_y ? a.first_y < b.first_y : a.first_x < b.first_x;
+  });
+  return v;
+}
+
+inline std::vector<InBeat> map_beats(const std::vector<DispMap>& maps) {
+  std::vector<InBeat> beats;
+  for (const auto& m : maps) {
+    const auto b = sim::frame_beats_of<InBeat>(m.d.data(), m.w, m.h);
+    beats.insert(beats.end(), b.begin(), b.end());
+  }
+  return beats;
+}
+
+/// The reference's objects of each map: the output words they make (objects + status).
+inline std::size_t expected_words(const std::vector<DispMap>& maps, const LabellingConfig& cfg) {
+  std::size_t n = 0;
+  for (const auto& m : maps)
+    n += reference::labelling_reference(m.d.data(), m.w, m.h, cfg).objects.size() + 1;
+  return n;
+}
+
+/// The frames a model gave equal the reference's, object for object, with a clean status.
+inline void check_against_reference(const std::vector<FrameOut>& frames,
+                                    const std::vector<DispMap>& maps,
+                                    const LabellingConfig& cfg) {
+  REQUIRE(frames.size() == maps.size());
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    INFO("map " << maps[i].name);
+    const auto ref = reference::labelling_reference(maps[i].d.data(), maps[i].w, maps[i].h, cfg);
+    CHECK(frames[i].status.objects == ref.objects.size());
+    CHECK_FALSE(frames[i].status.tile_overflow);
+    CHECK_FALSE(frames[i].status.object_overflow);
+    CHECK_FALSE(frames[i].status.stream_error);
+    CHECK(raster_sorted(frames[i].objects) == ref.objects);
+  }
+}
+
+/// Every map back to back through `model` under `pattern`.
+template <typename Model>
+sim::RunResult<LabelPacket> run_maps(Model& model, const std::vector<DispMap>& maps,
+                                     const LabellingConfig& cfg, const sim::StallPattern& pattern) {
+  return sim::run_stream(model, map_beats(maps), pattern, expected_words(maps, cfg), 4'000'000);
+}
+
+/// Runs `beats` through `model` under `pattern` until `frames` status words have come out
+/// (for streams whose object counts the reference cannot tell: overflows, broken frames).
+template <typename Model>
+sim::RunResult<LabelPacket> run_until_frames(Model& model, std::vector<InBeat> beats,
+                                             std::size_t frames,
+                                             const sim::StallPattern& pattern = {}) {
+  return sim::run_stream_until(
+      model, std::move(beats), pattern,
+      [frames](const std::vector<LabelPacket>& out) {
+        return static_cast<std::size_t>(std::count_if(out.begin(), out.end(), [](const auto& p) {
+                 return p.data.is_status;
+               })) >= frames;
+      },
+      400'000);
+}
+
+}  // namespace scw::test

@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: Apache-2.0
+// [hls] The streaming labelling model against the flood-fill reference: random maps of many
+// densities, adversarial shapes, every tile grid, Tsukuba's truth and a disparity-stage map;
+// overflow and stream errors flagged with the next frame correct.
+#include <catch2/catch.hpp>
+#include <memory>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+#include "host/disparity/run_model.hpp"
+#include "host/labelling/run_model.hpp"
+#include "sim/labelling_model.hpp"
+#include "tests/labelling/labelling_run.hpp"
+
+namespace {
+
+using namespace scw::test;
+using scw::hls::labelling::LabellingParams;
+using scw::labelling::grid_config;
+using scw::sim::StallPattern;
+
+// Room for every label a 64 x 48 map can need in one tile.
+using Big = LabellingParams<64, 48, 8, 8, 1024, 4096>;
+
+struct Grid {
+  int tx, ty;
+};
+// 1 x 1, even grids, and grids whose tiles do not divide 64 x 48 (3 x 5, 7 x 5: 22 and 10 px).
+const Grid kGrids[] = {{1, 1}, {2, 2}, {4, 3}, {8, 8}, {3, 5}, {7, 5}};
+
+std::vector<FrameOut> run_model(const std::vector<DispMap>& maps, const LabellingConfig& cfg,
+                                const StallPattern& p = {}) {
+  auto m = std::make_unique<scw::sim::LabellingModel<Big>>(cfg);
+  const auto r = run_maps(*m, maps, cfg, p);
+  REQUIRE_FALSE(r.timed_out);
+  CHECK(r.violations.empty());
+  return split_frames(r.out);
+}
+
+std::vector<DispMap> random_maps() {
+  std::vector<DispMap> v;
+  std::uint64_t seed = 1;
+  for (double density : {0.05, 0.2, 0.4, 0.55, 0.7, 0.85, 1.0})
+    for (int k = 0; k < 2; ++k) v.push_back(random_map(64, 48, density, seed++));
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("labelling model equals the flood fill on random maps, every grid", "[hls]") {
+  const auto maps = random_maps();
+  for (const Grid& g : kGrids) {
+    for (int min_area : {1, 6}) {
+      INFO("grid " << g.tx << " x " << g.ty << ", min area " << min_area);
+      const auto cfg = grid_config(64, 48, g.tx, g.ty, 0, min_area);
+      check_against_reference(run_model(maps, cfg), maps, cfg);
+    }
+  }
+}
+
+TEST_CASE("labelling model equals the flood fill on adversarial shapes, every grid", "[hls]") {
+  auto maps = adversarial_maps(64, 48);
+  maps.push_back(adversarial_maps(63, 47)[0]);  // an odd spiral (a different centre)
+  for (const Grid& g : kGrids) {
+    INFO("grid " << g.tx << " x " << g.ty);
+    for (const auto& m : maps) {
+      const auto cfg = grid_config(m.w, m.h, g.tx, g.ty, 0, 1);
+      check_against_reference(run_model({m}, cfg), {m}, cfg);
+    }
+  }
+}
+
+TEST_CASE("labelling model: the floor makes low disparities background", "[hls]") {
+  const auto maps = random_maps();
+  const auto cfg = grid_config(64, 48, 4, 3, 16 * 20, 1);
+  check_against_reference(run_model(maps, cfg), maps, cfg);
+}
+
+TEST_CASE("labelling model: stalls change no object", "[hls]") {
+  const std::vector<DispMap> maps{random_map(64, 48, 0.6, 99), spiral_map(64, 48)};
+  const auto cfg = grid_config(64, 48, 3, 5, 0, 1);
+  for (const auto& p : StallPattern::all(2)) {
+    INFO(p.name());
+    check_against_reference(run_model(maps, cfg, p), maps, cfg);
+  }
+}
+
+namespace {
+
+/// segment() (host build) against the reference on a whole map, several grids: objects and
+/// the second pass's label image.
+void check_segment(const cv::Mat& d16, int min_area, std::initializer_list<Grid> grids) {
+  const auto ref = scw::reference::labelling_reference(d16.ptr<std::uint16_t>(), d16.cols,
+                                                       d16.rows, grid_config(d16.cols, d16.rows,
+                                                                             1, 1, 0, min_area));
+  INFO(ref.objects.size() << " objects");
+  CHECK(ref.objects.size() > 3);
+  for (const Grid& g : grids) {
+    INFO("grid " << g.tx << " x " << g.ty);
+    const auto cfg = grid_config(d16.cols, d16.rows, g.tx, g.ty, 0, min_area);
+    const auto s = scw::labelling::segment(d16, cfg);
+    CHECK(s.objects_by_label == ref.objects);
+    CHECK(s.status.objects == ref.objects.size());
+    CHECK_FALSE(s.status.tile_overflow);
+    const cv::Mat ref_labels(d16.rows, d16.cols, CV_16UC1,
+                             const_cast<std::uint16_t*>(ref.labels.data()));
+    CHECK(cv::countNonZero(s.labels != ref_labels) == 0);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("labelling model equals the flood fill on Tsukuba's ground truth", "[hls]") {
+  const cv::Mat gt = cv::imread(SCW_DATA_DIR "/tsukuba/truedisp.row3.col3.pgm",
+                                cv::IMREAD_UNCHANGED);
+  REQUIRE(gt.type() == CV_8UC1);
+  cv::Mat d16;
+  gt.convertTo(d16, CV_16U);  // value = disparity x 16: already Q11.4
+  for (int min_area : {1, 50}) check_segment(d16, min_area, {{1, 1}, {4, 4}, {5, 3}, {8, 8}});
+}
+
+TEST_CASE("labelling model equals the flood fill on a disparity-stage map of Tsukuba", "[hls]") {
+  const auto l = scw::disparity::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
+  const auto r = scw::disparity::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
+  const cv::Mat d = scw::disparity::disparity_image(
+      l, r, 9, 0, 15, scw::disparity::mode_config(scw::disparity::Mode::thesis, l.cols, l.rows, 0));
+  cv::Mat d16;
+  d.convertTo(d16, CV_16U);  // thesis mode: invalid = 0, valid = d x 16 >= 0
+  // Block matching's speckle needs more than the host's 2048 labels in a single 384 x 288
+  // tile (1 x 1 is flagged as a tile overflow), so this map is cut into 2 x 2 and finer.
+  for (int min_area : {1, 20}) check_segment(d16, min_area, {{2, 2}, {4, 4}, {5, 3}, {8, 8}});
+}
+
+TEST_CASE("labelling: a full label table is flagged and the next frame is correct", "[hls]") {
+  // 2 x 2 tiles of 16 x 8 with 8 labels each: the dots map needs 16 per tile.
+  using Small = LabellingParams<32, 16, 2, 2, 8, 64>;
+  const auto cfg = grid_config(32, 16, 2, 2, 0, 1);
+  const std::vector<DispMap> maps{dots_map(32, 16), spiral_map(32, 16), staircase_map(32, 16)};
+  auto m = std::make_unique<scw::sim::LabellingModel<Small>>(cfg);
+  const auto r = run_until_frames(*m, map_beats(maps), maps.size());
+  const auto frames = split_frames(r.out);
+  REQUIRE(frames.size() == 3);
+  CHECK(frames[0].status.tile_overflow);
+  CHECK(frames[0].status.objects == 4 * 8);  // each tile's first 8 dots
+  const std::vector<DispMap> rest(maps.begin() + 1, maps.end());
+  check_against_reference({frames[1], frames[2]}, rest, cfg);
+}
+
+TEST_CASE("labelling: more objects than MaxObjects are flagged, the next frame correct",
+          "[hls]") {
+  using Few = LabellingParams<32, 16, 2, 2, 64, 5>;
+  const auto cfg = grid_config(32, 16, 2, 2, 0, 1);
+  const std::vector<DispMap> maps{dots_map(32, 16), spiral_map(32, 16)};
+  auto m = std::make_unique<scw::sim::LabellingModel<Few>>(cfg);
+  const auto r = run_until_frames(*m, map_beats(maps), maps.size());
+  const auto frames = split_frames(r.out);
+  REQUIRE(frames.size() == 2);
+  CHECK(frames[0].status.object_overflow);
+  CHECK(frames[0].status.objects == 5);
+  CHECK(frames[0].objects.size() == 5);
+  check_against_reference({frames[1]}, {maps[1]}, cfg);
+}
+
+TEST_CASE("labelling: broken frames are flagged and the next frame is correct", "[hls]") {
+  using Small = LabellingParams<32, 16, 2, 2, 64, 64>;
+  const auto cfg = grid_config(32, 16, 2, 2, 0, 1);
+  const DispMap good = nested_u_map(32, 16);
+  const auto whole = map_beats({good});
+  auto run = [&](std::vector<InBeat> beats) {
+    auto m = std::make_unique<scw::sim::LabellingModel<Small>>(cfg);
+    const auto r = run_until_frames(*m, std::move(beats), 2);
+    CHECK_FALSE(r.timed_out);
+    CHECK(r.violations.empty());
+    return split_frames(r.out);
+  };
+  SECTION("a frame cut short by the next sof") {
+    std::vector<InBeat> beats(whole.begin(), whole.begin() + 100);
+    beats.insert(beats.end(), whole.begin(), whole.end());
+    const auto f = run(beats);
+    REQUIRE(f.size() == 2);
+    CHECK(f[0].status.stream_error);
+    check_against_reference({f[1]}, {good}, cfg);
+  }
+  SECTION("beats before the first sof") {
+    std::vector<InBeat> beats(whole.begin() + 5, whole.begin() + 9);
+    beats.insert(beats.end(), whole.begin(), whole.end());
+    beats.insert(beats.end(), whole.begin(), whole.end());
+    const auto f = run(beats);
+    REQUIRE(f.size() == 2);
+    CHECK(f[0].status.stream_error);  // flagged on the frame they precede
+    CHECK(raster_sorted(f[0].objects) == raster_sorted(f[1].objects));
+    check_against_reference({f[1]}, {good}, cfg);
+  }
+  SECTION("a row with a misplaced eol") {
+    auto beats = whole;
+    beats[40].eol = true;
+    beats.insert(beats.end(), whole.begin(), whole.end());
+    const auto f = run(beats);
+    REQUIRE(f.size() == 2);
+    CHECK(f[0].status.stream_error);
+    check_against_reference({f[1]}, {good}, cfg);
+  }
+}
