@@ -11,9 +11,11 @@ void add_vectors_command(CLI::App& app);
 void add_stream_command(CLI::App& app);
 void add_rectify_command(CLI::App& app);
 void add_disparity_command(CLI::App& app);
+void add_segment_command(CLI::App& app);
 /// `scw vectors rectify`, added under the `vectors` subcommand.
 void add_vectors_rectify_command(CLI::App& vectors);
 /// `scw vectors disparity`, added under the `vectors` subcommand.
 void add_vectors_disparity_command(CLI::App& vectors);
+void add_vectors_labelling_command(CLI::App& vectors);  // `scw vectors labelling`
 
 }  // namespace scw::cli

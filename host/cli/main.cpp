@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   scw::cli::add_stream_command(app);
   scw::cli::add_rectify_command(app);
   scw::cli::add_disparity_command(app);
+  scw::cli::add_segment_command(app);
   scw::cli::add_vectors_command(app);
   scw::cli::add_vectors_rectify_command(*app.get_subcommand("vectors"));
   scw::cli::add_vectors_disparity_command(*app.get_subcommand("vectors"));
