@@ -3,7 +3,9 @@
 # The main job on the bundled data: installs what is missing, builds, and streams the Tsukuba
 # left image through the Verilated line buffer in the cycle simulator (3 frames, P = 2),
 # checking every beat and writing out/stream/report.json and a golden vector set; then
-# rectifies a raw chessboard pair through the fixed-point rectify stage (out/rectify/).
+# rectifies a raw chessboard pair through the fixed-point rectify stage (out/rectify/); then
+# computes Tsukuba's disparity through the disparity model (out/disparity/) and segments it into
+# objects through the tiled labelling model, with the host's post-processing (out/segment/).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/build.sh" --target scw
@@ -13,3 +15,10 @@ cd "$root"
 ./build/host/cli/scw vectors verify out/stream/vectors
 ./build/host/cli/scw rectify --calib data/chessboard/derived_stereo_calibration_helper.yml \
   --left data/chessboard/left01.jpg --right data/chessboard/right01.jpg --out-dir out/rectify
+mkdir -p out/disparity
+./build/host/cli/scw disparity --left data/tsukuba/scene1.row3.col3.ppm \
+  --right data/tsukuba/scene1.row3.col4.ppm --window 9 --min-disp 0 --max-disp 15 \
+  --out out/disparity/disparity.png --out16 out/disparity/disparity16.png \
+  --color out/disparity/disparity_color.png
+./build/host/cli/scw segment --disparity out/disparity/disparity16.png --min-area 50 --tiles 4x3 \
+  --post --out-dir out/segment
