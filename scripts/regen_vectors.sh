@@ -39,3 +39,16 @@ for preset in texture tsukuba; do
   rm -rf "$out/disparity/$preset"
   cp -r "$tmp/disparity_$preset" "$out/disparity/$preset"
 done
+
+# labelling/<preset>: five 64 x 48 adversarial shapes through one stage on 3 x 4 uneven tiles, a
+# 64 x 48 crop of the Tsukuba ground truth (2 x 2 tiles, min area 4), and a tile overflow and an
+# object overflow followed by a normal frame; from the C++ model of the stage built for 64 x 48,
+# 4 x 4 tiles of 64 labels, 64 objects, checked against the flood-fill reference; CTest replays
+# them against scw_labelling (tests/labelling/tb/).
+mkdir -p "$out/labelling"
+for preset in shapes tsukuba overflow; do
+  "$scw" vectors labelling --preset "$preset" --data-dir "$root/data/tsukuba" \
+    --out "$tmp/labelling_$preset" >/dev/null
+  rm -rf "$out/labelling/$preset"
+  cp -r "$tmp/labelling_$preset" "$out/labelling/$preset"
+done

@@ -2,6 +2,7 @@
 // A Verilated one-in one-out stream module as a cycle model, interchangeable with its C++ twin.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -43,6 +44,13 @@ class RtlStream {
   using out_type = Out;
 
   explicit RtlStream(const std::string& name) : h_(std::make_unique<Harness<VM>>(name)) {
+    h_->reset();
+  }
+  /// `configure` sets the module's static cfg_* inputs once, before reset; Verilator keeps
+  /// input values, so they stay stable throughout.
+  RtlStream(const std::string& name, const std::function<void(VM&)>& configure)
+      : h_(std::make_unique<Harness<VM>>(name)) {
+    configure(h_->dut());
     h_->reset();
   }
 

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   scw::cli::add_vectors_command(app);
   scw::cli::add_vectors_rectify_command(*app.get_subcommand("vectors"));
   scw::cli::add_vectors_disparity_command(*app.get_subcommand("vectors"));
+  scw::cli::add_vectors_labelling_command(*app.get_subcommand("vectors"));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: Apache-2.0
+// The Verilated scw_labelling as a stream model (disparities in, object words out), and the
+// compile-time check that it was built with the C++ parameters.
+#pragma once
+
+#include <algorithm>
+#include <string>
+
+#include "hls/labelling/labelling.hpp"
+#include "sim/labelling_pack.hpp"
+#include "sim/rtl_stream.hpp"
+
+namespace scw::sim {
+
+/// `VM` is a Verilated scw_labelling module class (its /*verilator public*/ parameters are
+/// static constexpr members); `Params` an hls::labelling::LabellingParams. The edge queue's
+/// depth sets when the stage takes input, so it must be the model's too.
+template <typename VM, typename Params>
+constexpr bool labelling_params_match() {
+  return VM::MaxWidthPx == Params::kMaxWidthPx && VM::MaxHeight == Params::kMaxHeight &&
+         VM::MaxTilesX == Params::kMaxTilesX && VM::MaxTilesY == Params::kMaxTilesY &&
+         VM::LabelsPerTile == Params::kLabelsPerTile && VM::MaxObjects == Params::kMaxObjects &&
+         VM::Nodes == Params::kNodes && VM::EdgeQueue == hls::labelling::kEdgeQueue;
+}
+
+/// `VM` is a Verilated scw_labelling built with `Params` (check with labelling_params_match).
+template <typename VM, typename Params>
+using LabellingRtl = RtlStream<VM, typename Params::in_beat, hls::labelling::LabelPacket>;
+
+/// Checks `cfg` as the model does (std::invalid_argument) and drives the cfg_* ports from it
+/// before reset. A tile wider or taller than 65535 never closes inside a frame, nor does one of
+/// 65535 (its last column or row is the image's), so the 16-bit tile ports saturate.
+template <typename VM, typename Params>
+LabellingRtl<VM, Params> make_labelling_rtl(const std::string& name,
+                                            const hls::labelling::LabellingConfig& cfg) {
+  hls::labelling::check_config<Params>(cfg);
+  return LabellingRtl<VM, Params>(name, [cfg](VM& m) {
+    m.cfg_width_i = static_cast<unsigned>(cfg.width);
+    m.cfg_height_i = static_cast<unsigned>(cfg.height);
+    m.cfg_tile_w_i = static_cast<unsigned>(std::min(cfg.tile_w, 65535));
+    m.cfg_tile_h_i = static_cast<unsigned>(std::min(cfg.tile_h, 65535));
+    m.cfg_floor_i = static_cast<unsigned>(cfg.floor);
+    m.cfg_min_area_i = static_cast<unsigned>(cfg.min_area);
+  });
+}
+
+}  // namespace scw::sim

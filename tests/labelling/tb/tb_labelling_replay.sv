@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: Apache-2.0
+// Self-checking replay of a labelling golden vector set against scw_labelling: disparities
+// driven with idle cycles, output backpressure, every output word compared.
+`timescale 1ns / 1ps
+`default_nettype none
+
+// Run with the set's manifest.json config as plusargs: +vectors=<set folder> +width +height
+// +tile_w +tile_h +floor +min_area. Parameters: config.max_width_px, max_height, max_tiles_x,
+// max_tiles_y, labels_per_tile, max_objects (the build), beats_in, words_out and frames.
+// +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
+// another).
+module tb_labelling_replay #(
+  parameter int unsigned MaxWidthPx    = 64,
+  parameter int unsigned MaxHeight     = 48,
+  parameter int unsigned MaxTilesX     = 4,
+  parameter int unsigned MaxTilesY     = 4,
+  parameter int unsigned LabelsPerTile = 64,
+  parameter int unsigned MaxObjects    = 64,
+  parameter int unsigned BeatsIn       = 3072,
+  parameter int unsigned WordsOut      = 12,
+  parameter int unsigned Frames        = 1
+);
+  localparam int unsigned OutW  = 1 + 32 + 10 * 16 + 9 * 64;  // sim/labelling_pack.hpp: 769
+  localparam int unsigned Nodes = MaxTilesX * MaxTilesY * LabelsPerTile;
+  // Generous: the stage takes about one beat a clock, then sweeps its used nodes twice a frame;
+  // the source idles 1 clock in 4 and the sink 3 in 7.
+  localparam longint unsigned MaxCycles = 8 * (BeatsIn + WordsOut) + 16 * Nodes * (Frames + 1)
+                                          + 10000;
+
+  logic [17:0]   in_mem  [BeatsIn];   // {eol, sof, d[15:0]}
+  logic [OutW:0] exp_mem [WordsOut];  // {last, data[768:0]}
+  string dir;
+  int unsigned width, height, tile_w, tile_h, floor_q4, min_area, stalls = 1;
+  initial begin
+    void'($value$plusargs("stalls=%d", stalls));
+    if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
+        !$value$plusargs("tile_w=%d", tile_w) || !$value$plusargs("tile_h=%d", tile_h) ||
+        !$value$plusargs("floor=%d", floor_q4) || !$value$plusargs("min_area=%d", min_area))
+      $fatal(1, "give the set's config: +width +height +tile_w +tile_h +floor +min_area");
+    if (width * height * Frames != BeatsIn)
+      $fatal(1, "%0d frames of %0d x %0d are not %0d beats", Frames, width, height, BeatsIn);
+    $readmemh({dir, "/in.hex"}, in_mem);
+    $readmemh({dir, "/expected.hex"}, exp_mem);
+  end
+
+  logic clk = 1'b0, rst_n = 1'b0;
+  always #4 clk = ~clk;  // 125 MHz
+  initial #20 rst_n = 1'b1;  // cfg_* are set at time 0, before reset ends, as the stage needs
+
+  longint unsigned cyc = 0;
+  always_ff @(posedge clk) cyc <= cyc + 1;
+
+  // Source: offers on 3 of 4 cycles; a beat once offered is held until taken.
+  int unsigned i = 0;
+  logic in_valid, in_ready, in_held = 1'b0;
+  logic [17:0] in_beat;
+  assign in_valid = rst_n && (i < BeatsIn) && (((cyc % 4) != 3) || in_held || stalls == 0);
+  assign in_beat  = in_mem[(i < BeatsIn) ? i : 0];
+  always_ff @(posedge clk) begin
+    in_held <= in_valid && !in_ready;
+    if (in_valid && in_ready) i <= i + 1;
+  end
+
+  // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each word taken must be the next expected one.
+  int unsigned o = 0, statuses = 0;
+  logic out_valid, out_ready, out_last, err;
+  logic [OutW-1:0] out_data;
+  assign out_ready = ((cyc % 7) inside {0, 1, 3, 6}) || stalls == 0;
+
+  scw_labelling #(
+    .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .MaxTilesX(MaxTilesX),
+    .MaxTilesY(MaxTilesY), .LabelsPerTile(LabelsPerTile), .MaxObjects(MaxObjects)
+  ) u_dut (
+    .clk_i(clk), .rst_ni(rst_n),
+    .cfg_width_i(16'(width)), .cfg_height_i(16'(height)), .cfg_tile_w_i(16'(tile_w)),
+    .cfg_tile_h_i(16'(tile_h)), .cfg_floor_i(16'(floor_q4)), .cfg_min_area_i(min_area),
+    .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_beat[15:0]),
+    .in_sof_i(in_beat[16]), .in_eol_i(in_beat[17]),
+    .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
+    .out_last_o(out_last), .err_o(err)
+  );
+
+  // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
+  logic stalled = 1'b0;
+  logic [OutW:0] stalled_word;
+  always_ff @(posedge clk) begin
+    if (stalled && (out_valid !== 1'b1 || {out_last, out_data} !== stalled_word))
+      $fatal(1, "word %0d: out_valid or the word changed while stalled (cycle %0d)", o, cyc);
+    stalled <= out_valid && !out_ready;
+    stalled_word <= {out_last, out_data};
+  end
+
+  always_ff @(posedge clk) begin
+    if (cyc > MaxCycles)
+      $fatal(1, "timeout after %0d of %0d words (%0d of %0d beats in)", o, WordsOut, i, BeatsIn);
+    if (rst_n && err !== 1'b0) $fatal(1, "err_o on a well-formed stream (cycle %0d)", cyc);
+    if (out_valid && out_ready) begin
+      // Bit 0 of the data tells a status word (frame end, with last) from an object.
+      if ({out_last, out_data} !== exp_mem[o])
+        $fatal(1, "word %0d (frame %0d, %s): got %h, expected %h", o, statuses,
+               exp_mem[o][0] ? "status" : "object", {out_last, out_data}, exp_mem[o]);
+      if (exp_mem[o][OutW]) statuses <= statuses + 1;
+      o <= o + 1;
+      if (o + 1 == WordsOut) begin
+        if (i != BeatsIn)
+          $fatal(1, "all words out, but only %0d of %0d beats taken", i, BeatsIn);
+        $display("PASS: %0d words match %s (%0d frames, %0d cycles)", WordsOut, dir, Frames,
+                 cyc);
+        $finish;
+      end
+    end
+  end
+endmodule
