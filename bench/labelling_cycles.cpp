@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Measured cycles of the labelling stage at the thesis size (1280 x 480, 8 x 4 tiles): the C++
-// model (the RTL's clock-for-clock twin) driven by a plain loop, frames back to back.
+// Measured cycles of the labelling stage at the thesis size (1280 x 480, 8 x 4 tiles): the
+// Verilated scw_labelling and its C++ model (clock-for-clock twins), each driven by a plain loop
+// with frames back to back (sim::run_stream's per-cycle trace would be too big at this size).
 //
 // For each map it prints the input cycles per frame (one beat per clock means cycles = pixels;
 // more are the clocks the stage held in_ready low because its edge queue was full), the cycles
@@ -18,11 +19,14 @@
 #include <string>
 #include <vector>
 
+#include "Vbench_labelling.h"
+#include "Vbench_labelling_scw_labelling.h"
 #include "bench/labelling_bench_configs.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/reference/labelling_ref.hpp"
 #include "sim/frame_beats.hpp"
 #include "sim/labelling_model.hpp"
+#include "sim/labelling_rtl.hpp"
 
 namespace {
 
@@ -32,6 +36,8 @@ using hls::labelling::LabellingConfig;
 using Params = bench::LabellingBench;
 constexpr int W = bench::kLabBenchWidth;
 constexpr int H = bench::kLabBenchHeight;
+static_assert(sim::labelling_params_match<Vbench_labelling_scw_labelling, Params>(),
+              "bench/CMakeLists.txt must build scw_labelling with LabellingBench's parameters");
 
 struct Map {
   std::string name;
@@ -45,9 +51,9 @@ struct FrameTimes {
   std::vector<hls::labelling::Object> objects;
 };
 
-std::vector<FrameTimes> run(const Map& m, const LabellingConfig& cfg, int frames) {
-  auto model = std::make_unique<sim::LabellingModel<Params>>(cfg);
-  while (model->kernel().phase() == sim::LabellingModel<Params>::Kernel::kInit) model->tick();
+/// Both engines start from reset (the parent RAM's clearing is before the first beat is taken).
+template <typename Model>
+std::vector<FrameTimes> run(Model& model, const Map& m, int frames) {
   using Beat = Params::in_beat;
   const auto one = sim::frame_beats_of<Beat>(m.d.ptr<std::uint16_t>(), W, H);
   std::vector<FrameTimes> t(static_cast<std::size_t>(frames));
@@ -56,8 +62,8 @@ std::vector<FrameTimes> run(const Map& m, const LabellingConfig& cfg, int frames
   for (std::int64_t c = 0; done < frames; ++c) {
     const bool valid = next < total;
     const Beat& b = one[next % one.size()];
-    const auto o = model->eval(valid, b, true);
-    model->tick();
+    const auto o = model.eval(valid, b, true);
+    model.tick();
     if (valid && o.in_ready) {
       auto& f = t[next / one.size()];
       if (f.first_in < 0) f.first_in = c;
@@ -99,7 +105,7 @@ Map random_field(double density) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Cycles of the labelling stage at 1280 x 480 (C++ model = RTL's twin)"};
+  CLI::App app{"Cycles of the labelling stage at 1280 x 480: scw_labelling and its C++ model"};
   std::vector<std::string> maps_in;
   int frames = 2, min_area = 1;
   bool reference = true;
@@ -109,6 +115,11 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "frames back to back per map")->check(CLI::Range(1, 8));
   app.add_option("--min-area", min_area, "MinArea");
   app.add_flag("!--no-reference", reference, "skip the flood-fill check");
+
+  std::string engine = "cpp";
+  app.add_option("--engine", engine, "cpp, rtl or both (both must agree on every cycle count "
+                                     "and object)")
+      ->check(CLI::IsMember({"cpp", "rtl", "both"}));
   CLI11_PARSE(app, argc, argv);
 
   std::vector<Map> maps;
@@ -141,9 +152,25 @@ int main(int argc, char** argv) {
               bench::kLabClockMhz);
   std::printf("%-40s %9s %8s %10s %10s %8s %8s %s\n", "map", "in cyc", "stalls", "tail cyc",
               "period", "ms/frm", "objects", "flags");
+  auto same = [](const std::vector<FrameTimes>& a, const std::vector<FrameTimes>& b) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i].first_in != b[i].first_in || a[i].last_in != b[i].last_in ||
+          a[i].status != b[i].status || !(a[i].st == b[i].st) || a[i].objects != b[i].objects)
+        return false;
+    return true;
+  };
   for (const auto& m : maps) {
     const auto t0 = std::chrono::steady_clock::now();
-    const auto t = run(m, cfg, frames);
+    std::vector<FrameTimes> t, t_rtl;
+    if (engine != "rtl") {
+      auto model = std::make_unique<sim::LabellingModel<Params>>(cfg);
+      t = run(*model, m, frames);
+    }
+    if (engine != "cpp") {
+      auto rtl = sim::make_labelling_rtl<Vbench_labelling, Params>("labelling", cfg);
+      t_rtl = run(rtl, m, frames);
+      if (t.empty()) t = t_rtl;
+    }
     const double secs =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const auto& f = t.back();
@@ -153,11 +180,18 @@ int main(int argc, char** argv) {
     if (f.st.tile_overflow) flags += "tile_overflow ";
     if (f.st.object_overflow) flags += "object_overflow ";
     if (f.st.stream_error) flags += "stream_error ";
-    std::printf("%-40s %9lld %8lld %10lld %10lld %8.3f %8u %s(%.1f s)\n", m.name.c_str(),
+    std::printf("%-40s %9lld %8lld %10lld %10lld %8.3f %8u %s(%s, %.1f s)\n", m.name.c_str(),
                 static_cast<long long>(in_cycles), static_cast<long long>(in_cycles - W * H),
                 static_cast<long long>(f.status - f.last_in), static_cast<long long>(period),
                 static_cast<double>(period) / (bench::kLabClockMhz * 1000.0), f.st.objects,
-                flags.c_str(), secs);
+                flags.c_str(), engine.c_str(), secs);
+    if (engine == "both") {
+      if (!same(t, t_rtl)) {
+        std::printf("  MISMATCH: RTL and C++ model differ\n");
+        return 1;
+      }
+      std::printf("  RTL = C++ model: every frame's cycles, status and objects\n");
+    }
     if (reference && !f.st.tile_overflow && !f.st.object_overflow) {
       const auto ref = reference::labelling_reference(m.d.ptr<std::uint16_t>(), W, H, cfg);
       auto got = f.objects;

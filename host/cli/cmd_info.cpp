@@ -19,7 +19,7 @@ void add_info_command(CLI::App& app) {
                  "(RTL in rtl_models/common, C++ twins in sim/ and hls/common)\n"
               << "  stall patterns:";
     for (const auto& p : sim::StallPattern::all(1)) std::cout << " " << p.name();
-    std::cout << "\n  stages: rectify, disparity (C++ and RTL); labelling, warning (to come)\n";
+    std::cout << "\n  stages: rectify, disparity, labelling (C++ and RTL); warning (to come)\n";
   });
 }
 
