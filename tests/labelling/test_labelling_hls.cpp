@@ -3,6 +3,7 @@
 // densities, adversarial shapes, every tile grid, Tsukuba's truth and a disparity-stage map;
 // overflow and stream errors flagged with the next frame correct.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
@@ -45,6 +46,17 @@ std::vector<DispMap> random_maps() {
   return v;
 }
 
+/// The second pass's label image (segment(), the host build) equals the reference's pixel for
+/// pixel: the same pixel sets, numbered alike.
+void check_labels(const DispMap& m, const LabellingConfig& cfg) {
+  cv::Mat d16(m.h, m.w, CV_16UC1);
+  std::copy(m.d.begin(), m.d.end(), d16.ptr<std::uint16_t>());
+  const auto ref = scw::reference::labelling_reference(m.d.data(), m.w, m.h, cfg);
+  const auto s = scw::labelling::segment(d16, cfg);
+  const cv::Mat ref_labels(m.h, m.w, CV_16UC1, const_cast<std::uint16_t*>(ref.labels.data()));
+  CHECK(cv::countNonZero(s.labels != ref_labels) == 0);
+}
+
 }  // namespace
 
 TEST_CASE("labelling model equals the flood fill on random maps, every grid", "[hls]") {
@@ -54,6 +66,7 @@ TEST_CASE("labelling model equals the flood fill on random maps, every grid", "[
       INFO("grid " << g.tx << " x " << g.ty << ", min area " << min_area);
       const auto cfg = grid_config(64, 48, g.tx, g.ty, 0, min_area);
       check_against_reference(run_model(maps, cfg), maps, cfg);
+      for (const auto& m : maps) check_labels(m, cfg);
     }
   }
 }
@@ -66,6 +79,7 @@ TEST_CASE("labelling model equals the flood fill on adversarial shapes, every gr
     for (const auto& m : maps) {
       const auto cfg = grid_config(m.w, m.h, g.tx, g.ty, 0, 1);
       check_against_reference(run_model({m}, cfg), {m}, cfg);
+      check_labels(m, cfg);
     }
   }
 }
