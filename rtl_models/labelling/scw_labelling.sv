@@ -670,7 +670,12 @@ module scw_labelling #(
     .rd_data_o(root_rd)
   );
 
-  scw_ram_sdp #(.Width(DescW), .Depth(Nodes)) u_desc_ram (
+  // Descriptors at their values' widths (scw_labelling_desc_ram), full width on the ports.
+  scw_labelling_desc_ram #(
+    .MaxWidthPx(MaxWidthPx),
+    .MaxHeight (MaxHeight),
+    .Depth     (Nodes)
+  ) u_desc_ram (
     .clk_i,
     .wr_en_i  (desc_we),
     .wr_addr_i(s2_node_q),
@@ -680,7 +685,11 @@ module scw_labelling #(
     .rd_data_o(desc_rd)
   );
 
-  scw_ram_sdp #(.Width(DescW), .Depth(Nodes)) u_acc_ram (
+  scw_labelling_desc_ram #(
+    .MaxWidthPx(MaxWidthPx),
+    .MaxHeight (MaxHeight),
+    .Depth     (Nodes)
+  ) u_acc_ram (
     .clk_i,
     .wr_en_i  (acc_we),
     .wr_addr_i(r3_root_q),
