@@ -27,7 +27,7 @@ using hls::labelling::Object;
 struct Options {
   std::string disparity;
   int min_area = 1;
-  std::string tiles = "1x1";
+  std::string tiles = "4x4";  // speckled street maps need more labels than one tile holds
   double scale = 16.0;
   double floor = 0.0;
   bool post = false;
