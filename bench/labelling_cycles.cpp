@@ -23,6 +23,7 @@
 #include "Vbench_labelling_scw_labelling.h"
 #include "bench/labelling_bench_configs.hpp"
 #include "host/labelling/run_model.hpp"
+#include "host/labelling/second_pass.hpp"
 #include "host/reference/labelling_ref.hpp"
 #include "sim/frame_beats.hpp"
 #include "sim/labelling_model.hpp"
@@ -194,11 +195,7 @@ int main(int argc, char** argv) {
     }
     if (reference && !f.st.tile_overflow && !f.st.object_overflow) {
       const auto ref = reference::labelling_reference(m.d.ptr<std::uint16_t>(), W, H, cfg);
-      auto got = f.objects;
-      std::sort(got.begin(), got.end(), [](const auto& a, const auto& b) {
-        return a.first_y != b.first_y ? a.first_y < b.first_y : a.first_x < b.first_x;
-      });
-      if (got != ref.objects) {
+      if (labelling::raster_sorted(f.objects) != ref.objects) {
         std::printf("  MISMATCH against the flood-fill reference\n");
         return 1;
       }

@@ -7,7 +7,6 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
@@ -21,6 +20,7 @@
 #include "hls/labelling/labelling_params.hpp"
 #include "host/cli/commands.hpp"
 #include "host/labelling/run_model.hpp"
+#include "host/labelling/second_pass.hpp"
 #include "host/reference/labelling_ref.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/frame_beats.hpp"
@@ -276,39 +276,13 @@ struct FrameOut {
   std::vector<std::uint16_t> label_of;  // objects[i]'s number in `labels`
 };
 
-bool raster_before(const Object& a, const Object& b) {
-  return a.first_y != b.first_y ? a.first_y < b.first_y : a.first_x < b.first_x;
-}
-
-/// The model's second pass on the frame it has just emitted (what segment() does with the host
-/// build): objects are numbered 1.. in raster order of their first pixel and each pixel takes
-/// the number of its node's root. Done on the vector build itself, so that in an overflow frame
-/// the image shows exactly the objects the stage reported.
+/// The model's second pass on the frame it has just emitted, on the vector build itself, so that
+/// in an overflow frame the image shows exactly the objects the stage reported.
 void second_pass(const Model::Kernel& k, const std::vector<std::int32_t>& node_map, FrameOut& f) {
-  std::vector<std::size_t> order(f.objects.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return raster_before(f.objects[a], f.objects[b]);
-  });
-  f.label_of.assign(f.objects.size(), 0);
-  std::map<int, std::uint16_t> label_of_root;
-  for (std::size_t r = 0; r < order.size(); ++r) {
-    const Object& o = f.objects[order[r]];
-    const int node1 = node_map[static_cast<std::size_t>(o.first_y) * kW + o.first_x];
-    if (node1 == 0)
-      throw std::logic_error("vectors labelling: an object's first pixel has no node");
-    const auto label = static_cast<std::uint16_t>(r + 1);
-    label_of_root[k.root(node1 - 1)] = label;
-    f.label_of[order[r]] = label;
-  }
-  f.labels = cv::Mat::zeros(kH, kW, CV_16UC1);
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      const int node1 = node_map[static_cast<std::size_t>(y) * kW + x];
-      if (node1 == 0) continue;
-      const auto it = label_of_root.find(k.root(node1 - 1));
-      if (it != label_of_root.end()) f.labels.at<std::uint16_t>(y, x) = it->second;
-    }
+  auto n = labelling::number_objects(f.objects, node_map, kW, kH,
+                                     [&k](int node) { return k.root(node); });
+  f.labels = n.labels;
+  f.label_of = std::move(n.label_of);
 }
 
 /// Every frame back to back through one stage, no stalls, from reset.
@@ -372,8 +346,7 @@ void check_frame(const Preset& p, const Frame& in, const FrameOut& got) {
         throw std::runtime_error(at + "the model gives " + status_text(got.status) +
                                  ", the reference finds " + std::to_string(ref.objects.size()) +
                                  " objects and no overflow");
-      auto sorted = got.objects;
-      std::sort(sorted.begin(), sorted.end(), raster_before);
+      const auto sorted = labelling::raster_sorted(got.objects);
       for (std::size_t i = 0; i < sorted.size(); ++i)
         if (sorted[i] != ref.objects[i])
           throw std::runtime_error(

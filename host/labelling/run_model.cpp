@@ -2,13 +2,12 @@
 // segment(): a disparity map through the labelling model, then the second pass.
 #include "host/labelling/run_model.hpp"
 
-#include <algorithm>
-#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "hls/labelling/labelling.hpp"
+#include "host/labelling/second_pass.hpp"
 #include "sim/labelling_model.hpp"
 
 namespace scw::labelling {
@@ -87,27 +86,11 @@ Segmentation segment(const cv::Mat& disp_q4, const LabellingConfig& cfg) {
   }
   if (s.status.stream_error) throw std::logic_error("labelling: the model flagged a stream error");
 
-  // Second pass: each reported object is found through its first pixel's root; objects are
-  // numbered in raster order of their first pixel.
-  s.objects_by_label = s.objects;
-  std::sort(s.objects_by_label.begin(), s.objects_by_label.end(),
-            [](const Object& a, const Object& b) {
-              return a.first_y != b.first_y ? a.first_y < b.first_y : a.first_x < b.first_x;
-            });
-  std::map<int, std::uint16_t> label_of_root;
-  for (std::size_t i = 0; i < s.objects_by_label.size(); ++i) {
-    const Object& o = s.objects_by_label[i];
-    const int node1 = node_map[static_cast<std::size_t>(o.first_y) * disp_q4.cols + o.first_x];
-    label_of_root[k.root(node1 - 1)] = static_cast<std::uint16_t>(std::min<std::size_t>(i + 1, 65535));
-  }
-  s.labels = cv::Mat::zeros(disp_q4.size(), CV_16UC1);
-  for (int y = 0; y < disp_q4.rows; ++y)
-    for (int x = 0; x < disp_q4.cols; ++x) {
-      const int node1 = node_map[static_cast<std::size_t>(y) * disp_q4.cols + x];
-      if (node1 == 0) continue;
-      const auto it = label_of_root.find(k.root(node1 - 1));
-      if (it != label_of_root.end()) s.labels.at<std::uint16_t>(y, x) = it->second;
-    }
+  // Second pass: objects numbered in raster order of their first pixel.
+  auto n = number_objects(s.objects, node_map, disp_q4.cols, disp_q4.rows,
+                          [&k](int node) { return k.root(node); });
+  s.labels = n.labels;
+  s.objects_by_label = raster_sorted(s.objects);
   return s;
 }
 

@@ -8,4 +8,28 @@ package scw_pkg;
   // A beat packed into one word, as FIFOs carry it and hex vectors store it:
   // {eol, sof, px[P-1], ..., px[0]}.
   localparam int unsigned BeatFlagBits = 2;
+  // One labelling object descriptor: the object word of sim/labelling_pack.hpp without its
+  // is_status bit, declared most significant first (area is bits [31:0], m03 the top 64 bits).
+  typedef struct packed {
+    logic [63:0] m03;
+    logic [63:0] m12;
+    logic [63:0] m21;
+    logic [63:0] m30;
+    logic [63:0] m02;
+    logic [63:0] m11;
+    logic [63:0] m20;
+    logic [63:0] m01;
+    logic [63:0] m10;
+    logic [15:0] first_y;
+    logic [15:0] first_x;
+    logic [15:0] closest_y;
+    logic [15:0] closest_x;
+    logic [15:0] d_max;
+    logic [15:0] d_min;
+    logic [15:0] y_max;
+    logic [15:0] y_min;
+    logic [15:0] x_max;
+    logic [15:0] x_min;
+    logic [31:0] area;
+  } label_desc_t;
 endpackage

@@ -81,31 +81,7 @@ module scw_labelling #(
     $error("scw_labelling: capacities are at least 1");
   end
 
-  // The descriptor (hls::labelling::Object), declared most significant first: the object part
-  // of sim/labelling_pack.hpp's word, area in bits [31:0].
-  typedef struct packed {
-    logic [63:0] m03;
-    logic [63:0] m12;
-    logic [63:0] m21;
-    logic [63:0] m30;
-    logic [63:0] m02;
-    logic [63:0] m11;
-    logic [63:0] m20;
-    logic [63:0] m01;
-    logic [63:0] m10;
-    logic [15:0] first_y;
-    logic [15:0] first_x;
-    logic [15:0] closest_y;
-    logic [15:0] closest_x;
-    logic [15:0] d_max;
-    logic [15:0] d_min;
-    logic [15:0] y_max;
-    logic [15:0] y_min;
-    logic [15:0] x_max;
-    logic [15:0] x_min;
-    logic [31:0] area;
-  } desc_t;
-
+  // Descriptors (hls::labelling::Object) are scw_pkg::label_desc_t.
   typedef enum logic [2:0] {PhInit, PhFrame, PhDrain, PhResolve, PhEmit} phase_e;
 
   // The thesis's join: 10 |d_cur - d_nb| < d_cur, d_cur the later pixel in raster order.
@@ -186,7 +162,7 @@ module scw_labelling #(
   logic [DescW-1:0] desc_rd;
   logic acc_re, acc_we;
   logic [NodeW-1:0] acc_raddr;
-  desc_t acc_rd;
+  scw_pkg::label_desc_t acc_rd;
 
   // ---- phases ------------------------------------------------------------------------------
   logic ph_frame, ph_pixels, ph_resolve, ph_emit;
@@ -397,7 +373,7 @@ module scw_labelling #(
   // ---- S2 (Frame, Drain) and R3 (Resolve): one descriptor into another ---------------------
   // S2: desc[node] = the pixel (a new label) or desc[node] + the pixel.
   // R3: acc[root] = desc[node] (the root itself) or acc[root] + desc[node].
-  desc_t pix;
+  scw_pkg::label_desc_t pix;
   logic [2*XW-1:0] uu;
   logic [XW+YW-1:0] uv;
   logic [2*YW-1:0] vv;

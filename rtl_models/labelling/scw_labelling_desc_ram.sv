@@ -2,7 +2,7 @@
 // Labelling: a RAM of object descriptors that stores each field at the width its values need.
 `default_nettype none
 
-// The stage computes with the descriptor's full output layout (sim/labelling_pack.hpp minus
+// The stage computes with scw_pkg::label_desc_t (sim/labelling_pack.hpp's object word minus
 // the is_status bit: 32-bit area, 16-bit coordinates and disparities, 64-bit moments), but no
 // value at MaxWidthPx x MaxHeight fills those widths: area < 2^AreaW, a coordinate < 2^PosXW or
 // 2^PosYW, m_pq < area * W^p * H^q < 2^(AreaW + p PosXW + q PosYW). So the words are narrowed on
@@ -18,10 +18,7 @@ module scw_labelling_desc_ram #(
   input  logic             clk_i,
   input  logic             wr_en_i,
   input  logic [AddrW-1:0] wr_addr_i,
-  // The high bits of each field are zero by the bounds above, so they are not stored.
-  /* verilator lint_off UNUSEDSIGNAL */
   input  logic [DescW-1:0] wr_data_i,
-  /* verilator lint_on UNUSEDSIGNAL */
   input  logic             rd_en_i,
   input  logic [AddrW-1:0] rd_addr_i,
   output logic [DescW-1:0] rd_data_o
@@ -45,23 +42,22 @@ module scw_labelling_desc_ram #(
   localparam int unsigned StoredW = AreaW + 4 * PosXW + 4 * PosYW + 32 + M10W + M01W + M20W +
                                     M11W + M02W + M30W + M21W + M12W + M03W;
 
-  // Field offsets of the full layout (area at bit 0), as sim/labelling_pack.hpp without bit 0.
-  localparam int unsigned FArea = 0, FXMin = 32, FXMax = 48, FYMin = 64, FYMax = 80,
-                          FDMin = 96, FDMax = 112, FCx = 128, FCy = 144, FFx = 160, FFy = 176,
-                          FM10 = 192, FM01 = 256, FM20 = 320, FM11 = 384, FM02 = 448,
-                          FM30 = 512, FM21 = 576, FM12 = 640, FM03 = 704;
-
+  // The high bits of each field are zero by the bounds above, so they are not stored.
+  /* verilator lint_off UNUSEDSIGNAL */
+  scw_pkg::label_desc_t wr_d;
+  /* verilator lint_on UNUSEDSIGNAL */
+  scw_pkg::label_desc_t rd_d;
   logic [StoredW-1:0] wr_s, rd_s;
 
-  // Stored order: the same fields, low to high, each at its own width.
-  assign wr_s = {wr_data_i[FM03 +: M03W], wr_data_i[FM12 +: M12W], wr_data_i[FM21 +: M21W],
-                 wr_data_i[FM30 +: M30W], wr_data_i[FM02 +: M02W], wr_data_i[FM11 +: M11W],
-                 wr_data_i[FM20 +: M20W], wr_data_i[FM01 +: M01W], wr_data_i[FM10 +: M10W],
-                 wr_data_i[FFy +: PosYW], wr_data_i[FFx +: PosXW], wr_data_i[FCy +: PosYW],
-                 wr_data_i[FCx +: PosXW], wr_data_i[FDMax +: 16], wr_data_i[FDMin +: 16],
-                 wr_data_i[FYMax +: PosYW], wr_data_i[FYMin +: PosYW],
-                 wr_data_i[FXMax +: PosXW], wr_data_i[FXMin +: PosXW],
-                 wr_data_i[FArea +: AreaW]};
+  // Stored order: the same fields, area lowest, each at its own width.
+  assign wr_d = wr_data_i;
+  assign wr_s = {wr_d.m03[M03W-1:0], wr_d.m12[M12W-1:0], wr_d.m21[M21W-1:0],
+                 wr_d.m30[M30W-1:0], wr_d.m02[M02W-1:0], wr_d.m11[M11W-1:0],
+                 wr_d.m20[M20W-1:0], wr_d.m01[M01W-1:0], wr_d.m10[M10W-1:0],
+                 wr_d.first_y[PosYW-1:0], wr_d.first_x[PosXW-1:0],
+                 wr_d.closest_y[PosYW-1:0], wr_d.closest_x[PosXW-1:0], wr_d.d_max, wr_d.d_min,
+                 wr_d.y_max[PosYW-1:0], wr_d.y_min[PosYW-1:0], wr_d.x_max[PosXW-1:0],
+                 wr_d.x_min[PosXW-1:0], wr_d.area[AreaW-1:0]};
 
   scw_ram_sdp #(.Width(StoredW), .Depth(Depth)) u_ram (
     .clk_i,
@@ -96,26 +92,27 @@ module scw_labelling_desc_ram #(
   localparam int unsigned SM03 = SM12 + M12W;
 
   always_comb begin
-    rd_data_o = '0;
-    rd_data_o[FArea +: AreaW] = rd_s[SArea +: AreaW];
-    rd_data_o[FXMin +: PosXW] = rd_s[SXMin +: PosXW];
-    rd_data_o[FXMax +: PosXW] = rd_s[SXMax +: PosXW];
-    rd_data_o[FYMin +: PosYW] = rd_s[SYMin +: PosYW];
-    rd_data_o[FYMax +: PosYW] = rd_s[SYMax +: PosYW];
-    rd_data_o[FDMin +: 16]    = rd_s[SDMin +: 16];
-    rd_data_o[FDMax +: 16]    = rd_s[SDMax +: 16];
-    rd_data_o[FCx +: PosXW]   = rd_s[SCx +: PosXW];
-    rd_data_o[FCy +: PosYW]   = rd_s[SCy +: PosYW];
-    rd_data_o[FFx +: PosXW]   = rd_s[SFx +: PosXW];
-    rd_data_o[FFy +: PosYW]   = rd_s[SFy +: PosYW];
-    rd_data_o[FM10 +: M10W]   = rd_s[SM10 +: M10W];
-    rd_data_o[FM01 +: M01W]   = rd_s[SM01 +: M01W];
-    rd_data_o[FM20 +: M20W]   = rd_s[SM20 +: M20W];
-    rd_data_o[FM11 +: M11W]   = rd_s[SM11 +: M11W];
-    rd_data_o[FM02 +: M02W]   = rd_s[SM02 +: M02W];
-    rd_data_o[FM30 +: M30W]   = rd_s[SM30 +: M30W];
-    rd_data_o[FM21 +: M21W]   = rd_s[SM21 +: M21W];
-    rd_data_o[FM12 +: M12W]   = rd_s[SM12 +: M12W];
-    rd_data_o[FM03 +: M03W]   = rd_s[SM03 +: M03W];
+    rd_d = '0;
+    rd_d.area      = 32'(rd_s[SArea +: AreaW]);
+    rd_d.x_min     = 16'(rd_s[SXMin +: PosXW]);
+    rd_d.x_max     = 16'(rd_s[SXMax +: PosXW]);
+    rd_d.y_min     = 16'(rd_s[SYMin +: PosYW]);
+    rd_d.y_max     = 16'(rd_s[SYMax +: PosYW]);
+    rd_d.d_min     = rd_s[SDMin +: 16];
+    rd_d.d_max     = rd_s[SDMax +: 16];
+    rd_d.closest_x = 16'(rd_s[SCx +: PosXW]);
+    rd_d.closest_y = 16'(rd_s[SCy +: PosYW]);
+    rd_d.first_x   = 16'(rd_s[SFx +: PosXW]);
+    rd_d.first_y   = 16'(rd_s[SFy +: PosYW]);
+    rd_d.m10       = 64'(rd_s[SM10 +: M10W]);
+    rd_d.m01       = 64'(rd_s[SM01 +: M01W]);
+    rd_d.m20       = 64'(rd_s[SM20 +: M20W]);
+    rd_d.m11       = 64'(rd_s[SM11 +: M11W]);
+    rd_d.m02       = 64'(rd_s[SM02 +: M02W]);
+    rd_d.m30       = 64'(rd_s[SM30 +: M30W]);
+    rd_d.m21       = 64'(rd_s[SM21 +: M21W]);
+    rd_d.m12       = 64'(rd_s[SM12 +: M12W]);
+    rd_d.m03       = 64'(rd_s[SM03 +: M03W]);
   end
+  assign rd_data_o = rd_d;
 endmodule

@@ -12,31 +12,8 @@ module scw_labelling_merge #(
   input  logic [DescW-1:0] b_i,
   output logic [DescW-1:0] o_o
 );
-  // Declared most significant first: area is bits [31:0], m03 the top 64 bits.
-  typedef struct packed {
-    logic [63:0] m03;
-    logic [63:0] m12;
-    logic [63:0] m21;
-    logic [63:0] m30;
-    logic [63:0] m02;
-    logic [63:0] m11;
-    logic [63:0] m20;
-    logic [63:0] m01;
-    logic [63:0] m10;
-    logic [15:0] first_y;
-    logic [15:0] first_x;
-    logic [15:0] closest_y;
-    logic [15:0] closest_x;
-    logic [15:0] d_max;
-    logic [15:0] d_min;
-    logic [15:0] y_max;
-    logic [15:0] y_min;
-    logic [15:0] x_max;
-    logic [15:0] x_min;
-    logic [31:0] area;
-  } desc_t;
 
-  desc_t a, b, o;
+  scw_pkg::label_desc_t a, b, o;
   logic a_closest, a_first;
 
   assign a = a_i;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hls/labelling/labelling_params.hpp"
+#include "host/labelling/second_pass.hpp"
 #include "host/reference/labelling_ref.hpp"
 #include "sim/frame_beats.hpp"
 #include "sim/labelling_pack.hpp"
@@ -45,12 +46,7 @@ inline std::vector<FrameOut> split_frames(const std::vector<LabelPacket>& out) {
   return frames;
 }
 
-inline std::vector<Object> raster_sorted(std::vector<Object> v) {
-  std::sort(v.begin(), v.end(), [](const Object& a, const Object& b) {
-    return a.first_y != b.first_y ? a.first_y < b.first_y : a.first_x < b.first_x;
-  });
-  return v;
-}
+using labelling::raster_sorted;
 
 inline std::vector<InBeat> map_beats(const std::vector<DispMap>& maps) {
   std::vector<InBeat> beats;
@@ -98,12 +94,12 @@ template <typename Model>
 sim::RunResult<LabelPacket> run_until_frames(Model& model, std::vector<InBeat> beats,
                                              std::size_t frames,
                                              const sim::StallPattern& pattern = {}) {
+  std::size_t seen = 0, closed = 0;  // count new words only: the check runs every cycle
   return sim::run_stream_until(
       model, std::move(beats), pattern,
-      [frames](const std::vector<LabelPacket>& out) {
-        return static_cast<std::size_t>(std::count_if(out.begin(), out.end(), [](const auto& p) {
-                 return p.data.is_status;
-               })) >= frames;
+      [frames, seen, closed](const std::vector<LabelPacket>& out) mutable {
+        for (; seen < out.size(); ++seen) closed += out[seen].data.is_status ? 1 : 0;
+        return closed >= frames;
       },
       400'000);
 }
