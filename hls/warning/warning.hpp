@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: Apache-2.0
+// Warning kernel: the labelling stage's object table in, one frame result out, clock by clock as
+// the RTL pipeline does it (docs/warning.md).
+#pragma once
+
+#include <array>
+#include <stdexcept>
+#include <string>
+
+#include "hls/labelling/labelling_params.hpp"
+#include "hls/warning/warning_params.hpp"
+
+namespace scw::hls::warning {
+
+/// Throws std::invalid_argument naming the field if `cfg` does not fit a stage built with
+/// `Params`.
+template <typename Params>
+void check_config(const WarningConfig& cfg) {
+  auto fail = [](const std::string& m) { throw std::invalid_argument("warning: " + m); };
+  if (cfg.baseline_q8 == 0 || cfg.baseline_q8 >= (1u << 20))
+    fail("baseline must be above 0 and below 4096 mm (Q12.8 in 20 bits)");
+  if (cfg.focal_q4 == 0) fail("focal length must be above 0 px");
+  if (cfg.d_limit_q4 < 16 || cfg.d_limit_q4 > Params::kTableSize)
+    fail("disparity limit " + std::to_string(cfg.d_limit_q4 / 16.0) + " px outside 1 .. " +
+         std::to_string(Params::kMaxDisparityPx) + " px (this build's reciprocal table)");
+  if (cfg.high_mm > cfg.medium_mm) fail("the high threshold lies beyond the medium one");
+}
+
+/// The stage. One pipeline enable (`in_ready = !out_valid || out_ready`): a word taken at a clock
+/// edge leaves the kLatency - 1 pipeline registers kLatency - 1 edges later and is folded into
+/// the frame's result; the word that closes the frame loads the output register on the same
+/// edge, so its result shows kLatency clocks after it was taken.
+template <typename Params>
+class Warning {
+ public:
+  using in_type = labelling::LabelPacket;
+  using out_type = ResultPacket;
+
+  explicit Warning(const WarningConfig& cfg) : cfg_(cfg) { check_config<Params>(cfg); }
+
+  // ---- what the ports show this clock ----
+  bool in_ready(bool out_ready) const { return !out_valid_ || out_ready; }
+  bool out_valid() const { return out_valid_; }
+  const out_type& out() const { return out_; }
+  const WarningConfig& config() const { return cfg_; }
+
+  /// One clock edge.
+  void clock(bool in_valid, const in_type& in, bool out_ready) {
+    if (out_valid_ && out_ready) out_valid_ = false;
+    const bool enable = !out_valid_ || out_ready;
+    if (!enable) return;
+    // The stage that leaves the pipeline is folded (out_valid_ is low here when it closes a
+    // frame, since enable held).
+    const Slot& last = pipe_[kStages - 1];
+    if (last.valid) fold(last);
+    for (int i = kStages - 1; i > 0; --i) pipe_[i] = pipe_[i - 1];
+    pipe_[0] = Slot{};
+    if (in_valid) {
+      pipe_[0].valid = true;
+      pipe_[0].word = in.data;
+      pipe_[0].last = in.last;
+      if (!in.data.is_status) pipe_[0].eval = evaluate<Params>(in.data.object, cfg_);
+    }
+  }
+
+ private:
+  static constexpr int kStages = kLatency - 1;
+  struct Slot {
+    bool valid = false;
+    bool last = false;
+    labelling::LabelWord word;
+    ObjectEval eval;
+  };
+
+  void fold(const Slot& s) {
+    if (!s.word.is_status) {
+      const ObjectEval& e = s.eval;
+      if (e.obstacle) {
+        ++acc_.obstacles;
+        if (!have_best_ || decides_over(e, best_)) {
+          have_best_ = true;
+          best_ = e;
+          acc_.index = acc_.objects;
+          acc_.severity = e.severity;
+          acc_.in_tunnel = e.in_tunnel;
+          acc_.too_close = e.too_close;
+          acc_.distance_mm = e.distance_mm;
+          const auto& o = s.word.object;
+          acc_.closest_x = o.closest_x;
+          acc_.closest_y = o.closest_y;
+          acc_.d_max = o.d_max;
+          acc_.x_min = o.x_min;
+          acc_.x_max = o.x_max;
+          acc_.y_min = o.y_min;
+          acc_.y_max = o.y_max;
+        }
+      }
+      ++acc_.objects;
+    }
+    if (!s.word.is_status && !s.last) return;
+    // The frame closes: on its status word, or on a `last` without one (a broken table).
+    FrameResult r = acc_;
+    if (s.word.is_status) {
+      const auto& st = s.word.status;
+      r.tile_overflow = st.tile_overflow;
+      r.object_overflow = st.object_overflow;
+      r.stream_error = st.stream_error || !s.last || st.objects != acc_.objects;
+    } else {
+      r.stream_error = true;
+    }
+    out_.data = r;
+    out_.last = true;
+    out_valid_ = true;
+    acc_ = FrameResult{};
+    have_best_ = false;
+  }
+
+  WarningConfig cfg_;
+  std::array<Slot, kStages> pipe_{};
+  FrameResult acc_;
+  ObjectEval best_;
+  bool have_best_ = false;
+  bool out_valid_ = false;
+  out_type out_{};
+};
+
+}  // namespace scw::hls::warning

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: Apache-2.0
+// Warning stage: capacities, run-time configuration, the per-object arithmetic (eq. 2.18, 3.11,
+// 3.12, 5.2) in fixed point, and the frame result (docs/warning.md).
+#pragma once
+
+#include <cstdint>
+
+#include "hls/common/beat.hpp"
+#include "hls/labelling/labelling_params.hpp"
+
+namespace scw::hls::warning {
+
+/// Built-in capacity: the reciprocal table covers disparity codes 0 .. 16 * MaxDisparityPx - 1
+/// (Q11.4). Objects whose closest disparity lies at or beyond the table are "too close".
+template <int MaxDisparityPx>
+struct WarningParams {
+  static constexpr int kMaxDisparityPx = MaxDisparityPx;
+  static constexpr int kTableSize = 16 * MaxDisparityPx;
+  static_assert(MaxDisparityPx >= 2 && MaxDisparityPx <= 2048, "disparity codes fit Q11.4");
+};
+
+/// Clocks from an input word's acceptance to its effect on the frame result (the RTL's
+/// pipeline depth, `Latency` in scw_warning): table read, b/d, coordinates, squares, square root,
+/// tunnel test, severity, fold. Shared by the model, the RTL and sim/.
+inline constexpr int kLatency = 36;
+
+/// Run-time configuration (the RTL's cfg_* ports), stable while frames stream. Lengths in mm.
+/// host/warning/setup.hpp fills it from metres and pixels (to_fixed) and documents the defaults.
+struct WarningConfig {
+  std::uint32_t baseline_q8 = 0;  // b, mm Q12.8 (20 bits: up to 4 m, steps of 4 um)
+  std::uint16_t focal_q4 = 0;     // f, px Q12.4
+  std::uint16_t cu_q4 = 0;        // principal point of the left camera, px Q12.4
+  std::uint16_t cv_q4 = 0;
+  // The vehicle origin (front bumper centre, on the ground) in camera coordinates (x right,
+  // y up, z ahead; thesis Fig. 5.4: -300, -1200, 1650).
+  std::int16_t veh_x_mm = 0;
+  std::int16_t veh_y_mm = 0;
+  std::int16_t veh_z_mm = 0;
+  std::uint16_t tunnel_half_w_mm = 0;  // half the tunnel's width, about the car's centre line
+  std::uint16_t tunnel_h_mm = 0;       // the tunnel's height above the ground
+  std::uint16_t high_mm = 0;           // eq. 5.2: in the tunnel, high when D <= high
+  std::uint16_t medium_mm = 0;         //   medium when D < medium, else low
+  std::uint16_t near_mm = 0;           // outside: medium when the gap to the tunnel <= near and
+                                       //   D < medium, else low
+  std::uint16_t min_height_mm = 0;     // objects lower than this (3D, eq. 3.12) are not obstacles
+  std::uint16_t d_limit_q4 = 0;        // d_max >= this: closer than the search range measures
+};
+
+enum class Severity : std::uint8_t { kNone = 0, kLow = 1, kMedium = 2, kHigh = 3 };
+
+/// `v / 2^n` rounded half up (an arithmetic shift of v + 2^(n-1), as the RTL does it).
+constexpr std::int64_t rshift_round(std::int64_t v, int n) {
+  return (v + (std::int64_t{1} << (n - 1))) >> n;
+}
+
+/// The reciprocal table: round(2^32 / dq) for a Q11.4 code dq >= 16 (d >= 1 px); 29 bits.
+constexpr std::uint32_t recip(std::uint32_t dq) {
+  return static_cast<std::uint32_t>(((std::uint64_t{1} << 32) + dq / 2) / dq);
+}
+
+/// floor(sqrt(n) + 1/2) for n < 2^52: what the RTL's bit-serial square root and its rounding
+/// step give.
+constexpr std::uint32_t isqrt_round(std::uint64_t n) {
+  std::uint64_t r = 0;
+  for (int b = 26; b >= 0; --b) {
+    const std::uint64_t t = r | (std::uint64_t{1} << b);
+    if (t * t <= n) r = t;
+  }
+  if (n - r * r > r) ++r;  // n >= (r + 1/2)^2 = r^2 + r + 1/4  <=>  n - r^2 > r
+  return static_cast<std::uint32_t>(r);
+}
+
+/// One object as the warning stage sees it. Lengths in mm, camera coordinates unless named v_.
+struct ObjectEval {
+  bool measurable = false;  // d_max >= 1 px; otherwise too far to place and never an obstacle
+  bool too_close = false;   // d_max >= d_limit: at most `distance_mm` away (an upper bound)
+  std::int64_t s_q20 = 0;   // b / d: mm per pixel at the object's depth, Q.20
+  std::int32_t x_mm = 0, y_mm = 0, z_mm = 0;  // closest point, eq. 2.18
+  std::int32_t x0_mm = 0, x1_mm = 0;          // left and right bounding-box edges at that depth
+  std::int32_t y_top_mm = 0, y_bot_mm = 0;    // top and bottom edges
+  std::int32_t width_mm = 0, height_mm = 0;   // eq. 3.12
+  std::int32_t distance_mm = 0;               // eq. 3.11 minus veh_z: from the bumper
+  std::int32_t gap_mm = 0;                    // to the tunnel's cross-section, 0 = inside
+  bool in_tunnel = false;
+  bool obstacle = false;                      // measurable and height >= min_height
+  Severity severity = Severity::kNone;        // kNone unless an obstacle
+};
+
+/// The per-object arithmetic of the stage, exactly as the RTL pipeline computes it.
+/// Pixel edges: a bounding box [x_min, x_max] spans x_min - 1/2 .. x_max + 1/2 (so W and H count
+/// pixels, never 0); all coordinates of an object use its closest disparity d_max. Codes past the
+/// table read its last entry; check_config keeps d_limit inside the table, so they are too close.
+template <typename Params>
+constexpr ObjectEval evaluate(const labelling::Object& o, const WarningConfig& c) {
+  ObjectEval e;
+  const std::uint32_t dq = o.d_max;
+  e.measurable = dq >= 16 && dq < 0x8000u;
+  if (!e.measurable) return e;
+  e.too_close = dq >= c.d_limit_q4;
+  const std::uint32_t index = dq < Params::kTableSize ? dq : Params::kTableSize - 1;
+  // S = b / d = b_q8 * 2^-8 * 16 / dq mm/px = b_q8 * recip * 2^-36; kept Q.20.
+  e.s_q20 = rshift_round(static_cast<std::int64_t>(c.baseline_q8) * recip(index), 16);
+  auto at = [&](std::int64_t px_q4) {  // S * (pixel offset, Q.4) in mm
+    return static_cast<std::int32_t>(rshift_round(e.s_q20 * px_q4, 24));
+  };
+  const std::int64_t cu = c.cu_q4, cv = c.cv_q4;
+  e.x_mm = at(16 * std::int64_t{o.closest_x} - cu);
+  e.y_mm = at(cv - 16 * std::int64_t{o.closest_y});
+  e.z_mm = at(c.focal_q4);
+  e.x0_mm = at(16 * std::int64_t{o.x_min} - 8 - cu);
+  e.x1_mm = at(16 * std::int64_t{o.x_max} + 8 - cu);
+  e.y_top_mm = at(cv - (16 * std::int64_t{o.y_min} - 8));
+  e.y_bot_mm = at(cv - (16 * std::int64_t{o.y_max} + 8));
+  e.width_mm = e.x1_mm - e.x0_mm;
+  e.height_mm = e.y_top_mm - e.y_bot_mm;
+  const std::uint64_t xx = static_cast<std::uint64_t>(std::int64_t{e.x_mm} * e.x_mm);
+  const std::uint64_t yy = static_cast<std::uint64_t>(std::int64_t{e.y_mm} * e.y_mm);
+  const std::uint64_t zz = static_cast<std::uint64_t>(std::int64_t{e.z_mm} * e.z_mm);
+  e.distance_mm = static_cast<std::int32_t>(isqrt_round(xx + yy + zz)) - c.veh_z_mm;
+  // The tunnel's cross-section in vehicle coordinates: |xv| <= half_w, 0 <= yv <= h.
+  const std::int32_t vx0 = e.x0_mm - c.veh_x_mm, vx1 = e.x1_mm - c.veh_x_mm;
+  const std::int32_t vy_top = e.y_top_mm - c.veh_y_mm, vy_bot = e.y_bot_mm - c.veh_y_mm;
+  const std::int32_t hw = c.tunnel_half_w_mm, th = c.tunnel_h_mm;
+  auto mx = [](std::int32_t a, std::int32_t b) { return a > b ? a : b; };
+  const std::int32_t gx = mx(0, mx(vx0 - hw, -hw - vx1));
+  const std::int32_t gy = mx(0, mx(vy_bot - th, -vy_top));
+  e.gap_mm = mx(gx, gy);
+  e.in_tunnel = e.gap_mm == 0;
+  e.obstacle = e.height_mm >= c.min_height_mm;
+  if (!e.obstacle) return e;
+  // Too close: closer than the search range can measure, so judged as if at the bumper.
+  const std::int32_t d = e.too_close ? 0 : e.distance_mm;
+  if (e.in_tunnel) {
+    e.severity = d <= c.high_mm     ? Severity::kHigh
+                 : d < c.medium_mm ? Severity::kMedium
+                                   : Severity::kLow;
+  } else {
+    e.severity = (e.gap_mm <= c.near_mm && d < c.medium_mm) ? Severity::kMedium : Severity::kLow;
+  }
+  return e;
+}
+
+/// Whether obstacle `a` decides the frame rather than `b`: worse severity, then the smaller
+/// judged distance (0 when too close), then the earlier object (b came first when equal).
+constexpr bool decides_over(const ObjectEval& a, const ObjectEval& b) {
+  if (a.severity != b.severity) return a.severity > b.severity;
+  const std::int32_t da = a.too_close ? 0 : a.distance_mm;
+  const std::int32_t db = b.too_close ? 0 : b.distance_mm;
+  return da < db;
+}
+
+/// The stage's one output word per frame.
+struct FrameResult {
+  Severity severity = Severity::kNone;  // worst over the frame's obstacles; kNone if there is none
+  bool in_tunnel = false;               // the deciding object's
+  bool too_close = false;               // the deciding object's d_max reached d_limit
+  bool tile_overflow = false;           // carried from the labelling status word
+  bool object_overflow = false;
+  bool stream_error = false;  // labelling's, or the table broke the packet rules (docs/warning.md)
+  std::uint16_t objects = 0;    // words of the frame's object table
+  std::uint16_t obstacles = 0;  // of those, obstacles
+  std::uint16_t index = 0xffff;  // deciding object's position in the table, 0xffff = none
+  std::int32_t distance_mm = 0;  // deciding object, from the bumper (upper bound when too_close)
+  // The deciding object's closest point, its disparity (Q11.4) and bounding box.
+  std::uint16_t closest_x = 0, closest_y = 0, d_max = 0;
+  std::uint16_t x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+
+  friend bool operator==(const FrameResult& a, const FrameResult& b) {
+    return a.severity == b.severity && a.in_tunnel == b.in_tunnel && a.too_close == b.too_close &&
+           a.tile_overflow == b.tile_overflow && a.object_overflow == b.object_overflow &&
+           a.stream_error == b.stream_error && a.objects == b.objects &&
+           a.obstacles == b.obstacles && a.index == b.index && a.distance_mm == b.distance_mm &&
+           a.closest_x == b.closest_x && a.closest_y == b.closest_y && a.d_max == b.d_max &&
+           a.x_min == b.x_min && a.x_max == b.x_max && a.y_min == b.y_min && a.y_max == b.y_max;
+  }
+  friend bool operator!=(const FrameResult& a, const FrameResult& b) { return !(a == b); }
+};
+
+using ResultPacket = Packet<FrameResult>;
+
+}  // namespace scw::hls::warning
