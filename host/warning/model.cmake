@@ -1,0 +1,3 @@
+# SPDX-License-Identifier: Apache-2.0
+# The warning model run over an object table (run_warning) for the CLI, vectors and checks.
+target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/warning/run_model.cpp)

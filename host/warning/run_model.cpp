@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "host/warning/run_model.hpp"
+
+#include <stdexcept>
+
+#include "hls/warning/warning.hpp"
+
+namespace scw::warning {
+
+std::vector<hls::labelling::LabelPacket> table_words(
+    const std::vector<hls::labelling::Object>& objects, const hls::labelling::FrameStatus& status) {
+  std::vector<hls::labelling::LabelPacket> words;
+  words.reserve(objects.size() + 1);
+  for (const auto& o : objects) {
+    hls::labelling::LabelPacket p;
+    p.data.object = o;
+    words.push_back(p);
+  }
+  hls::labelling::LabelPacket s;
+  s.data.is_status = true;
+  s.data.status = status;
+  s.last = true;
+  words.push_back(s);
+  return words;
+}
+
+FrameResult run_warning(const std::vector<hls::labelling::LabelPacket>& words,
+                        const WarningConfig& cfg, std::int64_t* cycles) {
+  hls::warning::Warning<HostParams> k(cfg);
+  std::size_t next = 0;
+  // Every word is offered on its own clock; the result leaves kLatency clocks after the
+  // closing word, so this bound is never reached by a frame that closes.
+  const std::int64_t limit = static_cast<std::int64_t>(words.size()) + hls::warning::kLatency + 2;
+  for (std::int64_t t = 0; t < limit; ++t) {
+    if (k.out_valid()) {
+      if (cycles) *cycles = t;
+      return k.out().data;
+    }
+    const bool valid = next < words.size();
+    const hls::labelling::LabelPacket in = valid ? words[next] : hls::labelling::LabelPacket{};
+    if (valid && k.in_ready(true)) ++next;
+    k.clock(valid, in, true);
+  }
+  throw std::logic_error("run_warning: the words close no frame (no status word or `last`)");
+}
+
+hls::warning::ObjectEval evaluate_object(const hls::labelling::Object& o,
+                                         const WarningConfig& cfg) {
+  return hls::warning::evaluate<HostParams>(o, cfg);
+}
+
+}  // namespace scw::warning
