@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: Apache-2.0
+// The warning stage's floating-point reference (docs/warning-reference.md).
+#include "host/warning/reference.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+namespace scw::host::warning {
+
+using hls::warning::Severity;
+
+namespace {
+
+/// Eq. 2.18: the camera-frame point seen at image position (u, v) with disparity d px.
+Eigen::Vector3d triangulate(double u, double v, double d, const WarningSetup& s) {
+  return Eigen::Vector3d(s.baseline_m * (u - s.cu_px) / d, s.baseline_m * (s.cv_px - v) / d,
+                         s.baseline_m * s.focal_px / d);
+}
+
+}  // namespace
+
+RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s) {
+  RefEval r;
+  // The disparity word is a signed Q11.4 number: codes with the top bit set are negative
+  // (invalid), and below 1 px the object is too far to place.
+  const double d = static_cast<std::int16_t>(o.d_max) / 16.0;
+  r.disparity_px = d;
+  r.measurable = d >= 1.0;
+  if (!r.measurable) return r;
+  r.too_close = d >= s.d_limit_px;
+
+  r.closest = triangulate(o.closest_x, o.closest_y, d, s);
+  // Every pixel covers [u - 1/2, u + 1/2], so the box reaches half a pixel past its outer
+  // centres and a one-pixel object still has a size.
+  r.top_left = triangulate(o.x_min - 0.5, o.y_min - 0.5, d, s);
+  r.bottom_right = triangulate(o.x_max + 0.5, o.y_max + 0.5, d, s);
+  r.width_m = r.bottom_right.x() - r.top_left.x();
+  r.height_m = r.top_left.y() - r.bottom_right.y();
+
+  r.camera_distance_m = r.closest.norm();
+  // The camera sits vehicle_origin.z behind the bumper (Fig. 5.4: 7.89 m -> 6.24 m).
+  r.distance_m = r.camera_distance_m - s.vehicle_origin.z();
+
+  // The box's cross-section in vehicle coordinates (origin on the ground below the bumper's
+  // centre), against the tunnel |x| <= half width, 0 <= y <= height.
+  const Eigen::Vector3d lu = r.top_left - s.vehicle_origin;
+  const Eigen::Vector3d rb = r.bottom_right - s.vehicle_origin;
+  const double hw = s.tunnel_half_width_m(), th = s.tunnel_height_m();
+  const double right_of = lu.x() - hw;  // > 0: the box starts right of the tunnel
+  const double left_of = -hw - rb.x();  // > 0: the box ends left of it
+  const double above = rb.y() - th;     // > 0: the box's bottom is above the roof
+  const double below = 0.0 - lu.y();    // > 0: the box's top is below the road
+  r.signed_gap_m = std::max({right_of, left_of, above, below});
+  r.gap_m = std::max(0.0, r.signed_gap_m);
+  r.in_tunnel = r.gap_m == 0.0;
+
+  r.obstacle = r.height_m >= s.min_height_m;
+  if (!r.obstacle) return r;
+  const double dist = r.judged_distance_m();
+  if (r.in_tunnel) {
+    // Eq. 5.2.
+    if (dist <= s.high_m)
+      r.severity = Severity::kHigh;
+    else if (dist < s.medium_m)
+      r.severity = Severity::kMedium;
+    else
+      r.severity = Severity::kLow;
+  } else {
+    // Section 5.4: outside the tunnel at most medium, and only when near it and not far ahead.
+    r.severity = r.gap_m <= s.near_m && dist < s.medium_m ? Severity::kMedium : Severity::kLow;
+  }
+  return r;
+}
+
+RefFrame fold_ref(const std::vector<hls::labelling::Object>& objects, const WarningSetup& s) {
+  RefFrame f;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const RefEval e = evaluate_ref(objects[i], s);
+    ++f.objects;
+    if (!e.obstacle) continue;
+    ++f.obstacles;
+    const bool first = f.index < 0;
+    // Strict comparisons keep the earlier object on a tie.
+    const bool worse = !first && e.severity > f.deciding.severity;
+    const bool nearer = !first && e.severity == f.deciding.severity &&
+                        e.judged_distance_m() < f.deciding.judged_distance_m();
+    if (first || worse || nearer) {
+      f.index = static_cast<int>(i);
+      f.deciding = e;
+      f.severity = e.severity;
+    }
+  }
+  return f;
+}
+
+}  // namespace scw::host::warning

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: Apache-2.0
+// Floating-point reference for the warning stage: eq. 2.18, 3.11, 3.12 and 5.2 in metres with
+// Eigen, written from the formulas so the fixed-point evaluate() can be checked against it.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "hls/labelling/labelling_params.hpp"
+#include "hls/warning/warning_params.hpp"
+#include "host/warning/setup.hpp"
+
+namespace scw::host::warning {
+
+/// One object as the reference sees it. Lengths in metres, camera coordinates (x right, y up,
+/// z ahead) unless said otherwise.
+struct RefEval {
+  bool measurable = false;    // d_max (as a signed Q11.4 number) is at least 1 px
+  bool too_close = false;     // d_max >= the setup's d_limit_px
+  double disparity_px = 0.0;  // d = d_max / 16
+  Eigen::Vector3d closest = Eigen::Vector3d::Zero();  // A, eq. 2.18 at the closest pixel
+  /// Bounding-box corners C_LU and C_RB at A's depth, through the pixel edges
+  /// (x_min - 1/2, y_min - 1/2) and (x_max + 1/2, y_max + 1/2).
+  Eigen::Vector3d top_left = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bottom_right = Eigen::Vector3d::Zero();
+  double width_m = 0.0, height_m = 0.0;  // eq. 3.12
+  double camera_distance_m = 0.0;        // |A|, eq. 3.11
+  double distance_m = 0.0;               // |A| - vehicle_origin.z: from the bumper
+  /// The box's separation from the tunnel's cross-section: the largest of the four amounts by
+  /// which it lies left, right, above or below the tunnel; <= 0 when they overlap.
+  double signed_gap_m = 0.0;
+  double gap_m = 0.0;  // max(0, signed_gap_m)
+  bool in_tunnel = false;
+  bool obstacle = false;  // measurable and height_m >= min_height_m
+  hls::warning::Severity severity = hls::warning::Severity::kNone;
+
+  /// The distance eq. 5.2 is applied to: 0 for a too-close object (judged as at the bumper).
+  double judged_distance_m() const { return too_close ? 0.0 : distance_m; }
+};
+
+/// The frame's outcome: the deciding obstacle (worst severity, then the smallest judged distance,
+/// then the earliest in the table), or none.
+struct RefFrame {
+  hls::warning::Severity severity = hls::warning::Severity::kNone;
+  int index = -1;  // position of the deciding object in the table, -1 = no obstacle
+  int objects = 0;
+  int obstacles = 0;
+  RefEval deciding;  // valid when index >= 0
+};
+
+/// Evaluates one labelling object in double precision: no integer arithmetic, thresholds taken
+/// from `s` in metres as given (not rounded to the stage's millimetres).
+RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s);
+
+/// Evaluates a frame's object table and picks the deciding obstacle.
+RefFrame fold_ref(const std::vector<hls::labelling::Object>& objects, const WarningSetup& s);
+
+}  // namespace scw::host::warning
