@@ -52,3 +52,14 @@ for preset in shapes tsukuba overflow; do
   rm -rf "$out/labelling/$preset"
   cp -r "$tmp/labelling_$preset" "$out/labelling/$preset"
 done
+
+# warning/<preset>: hand-placed objects for each rule of eq. 5.2 (incl. the thesis's worked
+# example), 64 seeded random tables, and broken tables each followed by a good one; from the C++
+# model of the stage built with MaxDisparityPx = 128, checked against a plain fold of evaluate();
+# CTest replays them against scw_warning (tests/warning/tb/).
+mkdir -p "$out/warning"
+for preset in thesis random malformed; do
+  "$scw" vectors warning --preset "$preset" --out "$tmp/warning_$preset" >/dev/null
+  rm -rf "$out/warning/$preset"
+  cp -r "$tmp/warning_$preset" "$out/warning/$preset"
+done

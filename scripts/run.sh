@@ -5,7 +5,8 @@
 # checking every beat and writing out/stream/report.json and a golden vector set; then
 # rectifies a raw chessboard pair through the fixed-point rectify stage (out/rectify/); then
 # computes Tsukuba's disparity through the disparity model (out/disparity/) and segments it into
-# objects through the tiled labelling model, with the host's post-processing (out/segment/).
+# objects through the tiled labelling model, with the host's post-processing (out/segment/);
+# last, the whole chain with the warning stage and its overlay (out/run/).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/build.sh" --target scw
@@ -22,3 +23,7 @@ mkdir -p out/disparity
   --color out/disparity/disparity_color.png
 ./build/host/cli/scw segment --disparity out/disparity/disparity16.png --min-area 50 --tiles 4x3 \
   --post --out-dir out/segment
+# Tsukuba's camera is not published with the pair: f 615 px and b 0.1 m are assumed.
+./build/host/cli/scw run --rectified --focal 615 --baseline 0.1 --window 9 --min-disp 0 \
+  --max-disp 15 --min-area 50 --left data/tsukuba/scene1.row3.col3.ppm \
+  --right data/tsukuba/scene1.row3.col4.ppm --out-dir out/run

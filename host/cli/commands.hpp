@@ -12,10 +12,13 @@ void add_stream_command(CLI::App& app);
 void add_rectify_command(CLI::App& app);
 void add_disparity_command(CLI::App& app);
 void add_segment_command(CLI::App& app);
+void add_run_command(CLI::App& app);
+void add_train_command(CLI::App& app);
 /// `scw vectors rectify`, added under the `vectors` subcommand.
 void add_vectors_rectify_command(CLI::App& vectors);
 /// `scw vectors disparity`, added under the `vectors` subcommand.
 void add_vectors_disparity_command(CLI::App& vectors);
 void add_vectors_labelling_command(CLI::App& vectors);  // `scw vectors labelling`
+void add_vectors_warning_command(CLI::App& vectors);    // `scw vectors warning`
 
 }  // namespace scw::cli

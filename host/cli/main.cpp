@@ -14,10 +14,13 @@ int main(int argc, char** argv) {
   scw::cli::add_rectify_command(app);
   scw::cli::add_disparity_command(app);
   scw::cli::add_segment_command(app);
+  scw::cli::add_run_command(app);
+  scw::cli::add_train_command(app);
   scw::cli::add_vectors_command(app);
   scw::cli::add_vectors_rectify_command(*app.get_subcommand("vectors"));
   scw::cli::add_vectors_disparity_command(*app.get_subcommand("vectors"));
   scw::cli::add_vectors_labelling_command(*app.get_subcommand("vectors"));
+  scw::cli::add_vectors_warning_command(*app.get_subcommand("vectors"));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

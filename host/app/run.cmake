@@ -1,0 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
+# The whole chain on stereo pairs (scw run): stages' C++ models plus the application layer.
+target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/app/run.cpp)
+target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/app/group.cpp)

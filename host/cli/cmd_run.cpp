@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: Apache-2.0
+// `scw run`: the whole chain on a stereo pair or a folder of numbered pairs; writes the
+// rectified pair, disparity, labels, the warning overlay and results.jsonl (docs/run.md).
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "host/app/run.hpp"
+#include "host/cli/commands.hpp"
+#include "host/labelling/picture.hpp"
+#include "host/rectify/calibration.hpp"
+#include "host/rectify/fixed_map.hpp"
+#include "host/rectify/run_model.hpp"
+
+namespace scw::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Options {
+  std::string calib, left, right, sequence, out_dir;
+  bool rectified = false;
+  double focal = 0, baseline = 0, cx = -1, cy = -1;
+  double calib_unit_m = 1.0;
+  std::string engine = "cpp";
+  std::string mode = "opencv";
+  app::RunOptions run;
+};
+
+/// Pairs in a folder: every file whose name holds "left" and has a twin with "right" in its
+/// place, in name order (000_left.png / 000_right.png, left_0001.pgm / right_0001.pgm, ...).
+std::vector<std::pair<fs::path, fs::path>> find_pairs(const fs::path& dir) {
+  if (!fs::is_directory(dir))
+    throw std::runtime_error("--sequence '" + dir.string() + "' is not a folder");
+  std::vector<fs::path> lefts;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_regular_file() && e.path().filename().string().find("left") != std::string::npos)
+      lefts.push_back(e.path());
+  std::sort(lefts.begin(), lefts.end());
+  std::vector<std::pair<fs::path, fs::path>> pairs;
+  for (const auto& l : lefts) {
+    std::string name = l.filename().string();
+    name.replace(name.find("left"), 4, "right");
+    const fs::path r = l.parent_path() / name;
+    if (fs::exists(r)) pairs.emplace_back(l, r);
+  }
+  if (pairs.empty())
+    throw std::runtime_error("--sequence '" + dir.string() +
+                             "' holds no pairs: name them like 0001_left.png and 0001_right.png");
+  return pairs;
+}
+
+/// "0001_left.png" -> "0001_": what a frame's output files start with in a sequence.
+std::string frame_prefix(const fs::path& left) {
+  std::string stem = left.stem().string();
+  stem.erase(stem.find("left"), 4);
+  const auto first = stem.find_first_not_of("_-.");
+  const auto last = stem.find_last_not_of("_-.");
+  return first == std::string::npos ? "frame_" : stem.substr(first, last - first + 1) + "_";
+}
+
+/// One line that redraws itself on a terminal, one line per step otherwise (logs stay readable).
+class Progress {
+ public:
+  explicit Progress(std::size_t total) : total_(total), tty_(isatty(STDERR_FILENO) != 0) {}
+  void show(std::size_t done, const std::string& note) {
+    const int width = 30;
+    const int filled = static_cast<int>(width * done / std::max<std::size_t>(total_, 1));
+    std::cerr << (tty_ ? "\r" : "") << "[" << std::string(filled, '#')
+              << std::string(width - filled, '.') << "] " << done << "/" << total_ << " frames"
+              << (note.empty() ? "" : "  " + note) << (tty_ ? "\033[K" : "\n") << std::flush;
+    if (tty_ && done == total_) std::cerr << "\n";
+  }
+
+ private:
+  std::size_t total_;
+  bool tty_;
+};
+
+void write_png(const fs::path& p, const cv::Mat& m) {
+  if (!cv::imwrite(p.string(), m)) throw std::runtime_error("cannot write '" + p.string() + "'");
+}
+
+/// Reads the camera from the calibration (rectified f, principal point, baseline) and builds
+/// the fixed-point maps, or takes --focal/--baseline/--cx/--cy for rectified pairs.
+std::optional<app::RectifyMaps> set_up_camera(Options& o, cv::Size size) {
+  auto& w = o.run.warning;
+  if (o.rectified) {
+    if (o.focal <= 0 || o.baseline <= 0)
+      throw std::runtime_error("--rectified needs --focal (px) and --baseline (m)");
+    w.focal_px = o.focal;
+    w.baseline_m = o.baseline;
+    w.cu_px = o.cx >= 0 ? o.cx : (size.width - 1) / 2.0;
+    w.cv_px = o.cy >= 0 ? o.cy : (size.height - 1) / 2.0;
+    return std::nullopt;
+  }
+  if (o.calib.empty())
+    throw std::runtime_error("give --calib CALIB for raw pairs, or --rectified with --focal, "
+                             "--baseline (and --cx, --cy) for pairs already rectified");
+  const auto calib = rectify::load_stereo_calibration(o.calib, size);
+  if (calib.image_size != size)
+    throw std::runtime_error("the images are " + std::to_string(size.width) + " x " +
+                             std::to_string(size.height) + " px but the calibration '" + o.calib +
+                             "' is for " + std::to_string(calib.image_size.width) + " x " +
+                             std::to_string(calib.image_size.height) + " px");
+  const auto rect = rectify::rectify_calibration(calib);
+  w.focal_px = rect.focal_px();
+  w.baseline_m = rect.baseline() * o.calib_unit_m;
+  w.cu_px = rect.principal_point().x;
+  w.cv_px = rect.principal_point().y;
+  app::RectifyMaps maps;
+  maps.left = rectify::quantise_map(rect.map1_x, rect.map1_y);
+  maps.right = rectify::quantise_map(rect.map2_x, rect.map2_y);
+  const auto plan = rectify::plan_for_stage(
+      {rectify::row_window(maps.left), rectify::row_window(maps.right)}, rectify::kHostStageRows,
+      o.calib);
+  maps.lead_rows = plan.lead_rows;
+  return maps;
+}
+
+/// Each object with the warning stage's view of it and the application layer's.
+void write_objects_csv(const fs::path& p, const app::FrameOutput& f) {
+  std::ofstream csv(p);
+  csv << "label,area,u0,v0,u1,v1,closest_u,closest_v,disparity,x_m,y_m,z_m,width_m,height_m,"
+         "distance_m,gap_m,in_tunnel,obstacle,too_close,severity,hu1,hu2,hu3,class,track,"
+         "deciding\n";
+  for (const auto& r : f.objects) {
+    const auto& o = r.object;
+    const auto& e = r.eval;
+    csv << r.label << ',' << o.area << ',' << o.x_min << ',' << o.y_min << ',' << o.x_max << ','
+        << o.y_max << ',' << o.closest_x << ',' << o.closest_y << ',' << o.d_max / 16.0 << ','
+        << e.x_mm / 1000.0 << ',' << e.y_mm / 1000.0 << ',' << e.z_mm / 1000.0 << ','
+        << e.width_mm / 1000.0 << ',' << e.height_mm / 1000.0 << ',' << e.distance_mm / 1000.0
+        << ',' << e.gap_mm / 1000.0 << ',' << e.in_tunnel << ',' << e.obstacle << ','
+        << e.too_close << ',' << app::severity_name(e.severity) << ',' << r.hu[0] << ','
+        << r.hu[1] << ',' << r.hu[2] << ',' << r.cls << ',' << r.track << ','
+        << (r.label == f.deciding_label) << "\n";
+  }
+  if (!csv) throw std::runtime_error("cannot write '" + p.string() + "'");
+}
+
+void write_frame(const fs::path& dir, const std::string& prefix, const app::FrameOutput& f) {
+  write_png(dir / (prefix + "left_rect.png"), f.left);
+  write_png(dir / (prefix + "right_rect.png"), f.right);
+  write_png(dir / (prefix + "disparity16.png"), f.disparity);
+  cv::Mat q4;
+  f.disparity.convertTo(q4, CV_16UC1);  // invalid (negative) codes saturate to 0: black
+  write_png(dir / (prefix + "disparity.png"), labelling::disparity_picture(q4));
+  write_png(dir / (prefix + "labels.png"), f.segmentation.labels);
+  write_png(dir / (prefix + "labels_color.png"), labelling::colour_labels(f.segmentation.labels));
+  write_png(dir / (prefix + "overlay.png"), f.overlay);
+  write_objects_csv(dir / (prefix + "objects.csv"), f);
+}
+
+void run(Options& o) {
+  if (o.engine != "cpp")
+    throw std::runtime_error("--engine " + o.engine + ": scw run drives the C++ models (cpp)");
+  o.run.mode = o.mode == "thesis" ? disparity::Mode::thesis : disparity::Mode::opencv;
+  std::vector<std::pair<fs::path, fs::path>> pairs;
+  if (!o.sequence.empty()) {
+    if (!o.left.empty() || !o.right.empty())
+      throw std::runtime_error("give either --left/--right or --sequence, not both");
+    pairs = find_pairs(o.sequence);
+  } else {
+    if (o.left.empty() || o.right.empty())
+      throw std::runtime_error("give --left and --right (or --sequence DIR)");
+    pairs.emplace_back(o.left, o.right);
+  }
+  const cv::Mat first = disparity::read_grey_image(pairs.front().first.string());
+  auto maps = set_up_camera(o, first.size());
+  std::cerr << "run: " << pairs.size() << (pairs.size() == 1 ? " pair" : " pairs") << ", "
+            << first.cols << " x " << first.rows << " px, f " << o.run.warning.focal_px
+            << " px, baseline " << o.run.warning.baseline_m << " m, principal point ("
+            << o.run.warning.cu_px << ", " << o.run.warning.cv_px << "), window " << o.run.window
+            << ", d " << o.run.min_disp << " .. " << o.run.max_disp << ", " << o.mode << " mode"
+            << (o.run.ground ? ", ground removal" : "") << "\n";
+  app::Runner runner(o.run, std::move(maps));
+
+  const fs::path dir(o.out_dir);
+  fs::create_directories(dir);
+  std::ofstream jsonl(dir / "results.jsonl");
+  if (!jsonl) throw std::runtime_error("cannot write '" + (dir / "results.jsonl").string() + "'");
+  Progress progress(pairs.size());
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const cv::Mat l = disparity::read_grey_image(pairs[i].first.string());
+    const cv::Mat r = disparity::read_grey_image(pairs[i].second.string());
+    if (l.size() != r.size())
+      throw std::runtime_error("'" + pairs[i].first.string() + "' (" + std::to_string(l.cols) +
+                               " x " + std::to_string(l.rows) + ") and '" +
+                               pairs[i].second.string() + "' (" + std::to_string(r.cols) + " x " +
+                               std::to_string(r.rows) + ") differ in size: a stereo pair has "
+                               "one size");
+    if (l.size() != first.size())
+      throw std::runtime_error("pair '" + pairs[i].first.string() + "' differs in size from the "
+                               "first pair: every pair of a sequence must have one size");
+    const app::FrameOutput f = runner.process(l, r);
+    const std::string prefix = pairs.size() == 1 ? "" : frame_prefix(pairs[i].first);
+    write_frame(dir, prefix, f);
+    const auto j = app::frame_json(static_cast<int>(i), f);
+    jsonl << j.dump() << "\n";
+    std::string note = std::string(app::severity_name(f.result.severity));
+    if (f.deciding_label > 0) note += " at " + std::to_string(f.result.distance_mm / 1000.0).substr(0, 5) + " m";
+    if (pairs.size() > 1) progress.show(i + 1, note);
+    else std::cout << j.dump() << "\n";
+  }
+  std::cout << "wrote " << pairs.size() << (pairs.size() == 1 ? " frame" : " frames") << " in "
+            << dir.string() << " (overlay.png, disparity.png, labels_color.png, results.jsonl)\n";
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "run", "The whole chain (rectify, disparity, labelling, warning) on the stages' C++ models, "
+             "then classification, tracking and the warning overlay");
+  cmd->add_option("--calib", o->calib, "OpenCV FileStorage calibration (M1 D1 M2 D2 R T) of raw pairs");
+  cmd->add_option("--left", o->left, "Left image")->check(CLI::ExistingFile);
+  cmd->add_option("--right", o->right, "Right image")->check(CLI::ExistingFile);
+  cmd->add_option("--sequence", o->sequence, "Folder of numbered pairs (NNNN_left.png, NNNN_right.png)");
+  cmd->add_option("--out-dir", o->out_dir, "Where the pictures and results.jsonl go")->required();
+  cmd->add_flag("--rectified", o->rectified, "The pairs are already rectified: skip rectification");
+  cmd->add_option("--focal", o->focal, "With --rectified: focal length, px");
+  cmd->add_option("--baseline", o->baseline, "With --rectified: baseline, m");
+  cmd->add_option("--cx", o->cx, "With --rectified: principal point u, px (default: image centre)");
+  cmd->add_option("--cy", o->cy, "With --rectified: principal point v, px (default: image centre)");
+  cmd->add_option("--calib-unit-m", o->calib_unit_m,
+                  "Metres per calibration unit (e.g. the chessboard square), default 1")->capture_default_str();
+  cmd->add_option("--engine", o->engine, "cpp: the stages' C++ models")->capture_default_str()
+      ->check(CLI::IsMember({"cpp"}));
+  cmd->add_option("--window", o->run.window, "SAD window N")->capture_default_str();
+  cmd->add_option("--min-disp", o->run.min_disp, "Smallest candidate disparity")->capture_default_str();
+  cmd->add_option("--max-disp", o->run.max_disp,
+                  "Largest candidate; objects reaching it are flagged too_close")->capture_default_str();
+  cmd->add_option("--mode", o->mode, "Disparity mode (scw disparity --help)")->capture_default_str()
+      ->check(CLI::IsMember({"thesis", "opencv"}));
+  cmd->add_option("--min-area", o->run.min_area, "Smallest object, px")->capture_default_str();
+  cmd->add_flag("--ground", o->run.ground, "Ground-plane removal (thesis 6.2) before labelling");
+  cmd->add_option("--camera-height", o->run.camera_height_m,
+                  "Camera height above the road, m (ground removal's slope)")->capture_default_str();
+  cmd->add_option("--min-height", o->run.warning.min_height_m,
+                  "Lower objects are not obstacles (road markings), m")->capture_default_str();
+  cmd->add_option("--near", o->run.warning.near_m,
+                  "Outside the tunnel: medium when this close to it, m")->capture_default_str();
+  cmd->add_option("--car-width", o->run.warning.car_width_m, "Car width, m (tunnel: 1.5x)")->capture_default_str();
+  cmd->add_option("--car-height", o->run.warning.car_height_m, "Car height, m (tunnel: 1.5x)")->capture_default_str();
+  cmd->add_option("--classifier", o->run.classifier,
+                  "Model from scw train (SVM or neural network); default: the parallelepiped "
+                  "classifier of Table 5.4")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--classifier-s", o->run.classifier_s,
+                  "The parallelepiped classifier's interval m +- s sigma (Table 5.5)")
+      ->capture_default_str();
+  cmd->add_flag("--kalman", o->run.kalman, "Track with a cv::KalmanFilter (constant velocity)");
+  cmd->add_option("--frame-period", o->run.frame_period_s, "Seconds between frames (speed)")
+      ->capture_default_str();
+  cmd->add_flag("--overlay-on-labels", o->run.overlay_on_labels,
+                "Draw the overlay on the label picture instead of the left image");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace scw::cli

@@ -1,0 +1,3 @@
+# SPDX-License-Identifier: Apache-2.0
+# `scw run`: the whole chain and the application layer.
+target_sources(scw PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/cmd_run.cpp)

@@ -1,0 +1,3 @@
+# SPDX-License-Identifier: Apache-2.0
+# `scw vectors warning`: golden vector sets of the warning stage, from its C++ model.
+target_sources(scw PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/cmd_vectors_warning.cpp)

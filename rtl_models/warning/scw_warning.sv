@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: Apache-2.0
+// Warning: the labelling stage's object table in, one collision-warning result per frame out.
+`default_nettype none
+
+// The C++ twin is scw::hls::warning::Warning (hls/warning/warning.hpp) clocked by
+// scw::sim::WarningModel, clock for clock: same in_ready, out_valid and out data every cycle.
+// One pipeline enable, en = !out_valid || out_ready (= in_ready): a word taken at an edge is in
+// S0 after it, in S(Latency-2) Latency-2 enabled edges later, and the next enabled edge folds it
+// into the frame's accumulator; the word that closes the frame (its status word, or a `last`
+// without one) loads the output register on that edge. Stages:
+//   S0              the word's fields (a status word's in the same bits), its flags, and the
+//                   reciprocal table read at min(d_max, table end) (scw_warning_recip)
+//   S1 .. S(L-2)    the per-object arithmetic (scw_warning_object) beside the fields
+//   fold            obstacles counted; the deciding one is the worse severity, then the smaller
+//                   judged distance, then the earlier; on close the result is the accumulator
+//                   with the status word's flags, and stream_error when the table broke the
+//                   packet rules (status without last, last without status, object count)
+// Output word: sim/warning_pack.hpp. Input word: sim/labelling_pack.hpp (label_desc_t above
+// the is_status bit; a status word's objects and flags sit where area and x_min are).
+// cfg_* are static: registered without reset, so set them at least a clock before the first
+// word (the C++ adapter sets them before reset).
+module scw_warning #(
+  parameter int unsigned MaxDisparityPx /*verilator public*/ = 64,
+  localparam int unsigned InW  = 1 + 32 + 10 * 16 + 9 * 64,  // sim/labelling_pack.hpp
+  localparam int unsigned OutW = 2 + 5 + 3 * 16 + 32 + 7 * 16  // sim/warning_pack.hpp
+) (
+  input  logic               clk_i,
+  input  logic               rst_ni,
+  // static configuration (hls::warning::WarningConfig)
+  input  logic [19:0]        cfg_baseline_q8_i,
+  input  logic [15:0]        cfg_focal_q4_i,
+  input  logic [15:0]        cfg_cu_q4_i,
+  input  logic [15:0]        cfg_cv_q4_i,
+  input  logic signed [15:0] cfg_veh_x_mm_i,
+  input  logic signed [15:0] cfg_veh_y_mm_i,
+  input  logic signed [15:0] cfg_veh_z_mm_i,
+  input  logic [15:0]        cfg_tunnel_half_w_mm_i,
+  input  logic [15:0]        cfg_tunnel_h_mm_i,
+  input  logic [15:0]        cfg_high_mm_i,
+  input  logic [15:0]        cfg_medium_mm_i,
+  input  logic [15:0]        cfg_near_mm_i,
+  input  logic [15:0]        cfg_min_height_mm_i,
+  input  logic [15:0]        cfg_d_limit_q4_i,
+  // the labelling stage's objects, then its status word with last
+  input  logic               in_valid_i,
+  output logic               in_ready_o,
+  input  logic [InW-1:0]     in_data_i,
+  input  logic               in_last_i,
+  // one result per frame
+  output logic               out_valid_o,
+  input  logic               out_ready_i,
+  output logic [OutW-1:0]    out_data_o,
+  output logic               out_last_o
+);
+  // hls::warning::kLatency: clocks from a word's acceptance to its effect on the result.
+  localparam int unsigned Latency   /*verilator public*/ = 36;
+  localparam int unsigned TableSize /*verilator public*/ = 16 * MaxDisparityPx;
+  localparam int unsigned Stages = Latency - 1;  // S0 .. S(Stages-1), then the fold
+  localparam int unsigned AddrW  = $clog2(TableSize);
+  localparam int unsigned FW     = 7 * 16;        // the fields a result reports
+  localparam int unsigned DW     = 29;            // distances, signed
+
+  if (MaxDisparityPx < 2 || MaxDisparityPx > 2048) begin : gen_bad
+    $error("scw_warning: MaxDisparityPx is 2 .. 2048 (codes in Q11.4)");
+  end
+
+  logic en;
+  assign en = !out_valid_o || out_ready_i;
+  assign in_ready_o = en;
+
+  // ---- input word ---------------------------------------------------------------------------
+  scw_pkg::label_desc_t desc;
+  logic in_status;
+  assign in_status = in_data_i[0];
+  assign desc = in_data_i[InW-1:1];
+
+  // Fields in result order (closest_x lowest); a status word puts {flags, objects} there.
+  logic [FW-1:0] fields;
+  assign fields = in_status
+      ? {{(FW - 35){1'b0}}, desc.x_min[2:0], desc.area}  // stream_error, object_, tile_overflow
+      : {desc.y_max, desc.y_min, desc.x_max, desc.x_min, desc.d_max, desc.closest_y,
+         desc.closest_x};
+
+  logic [AddrW-1:0] addr;
+  assign addr = (desc.d_max < 16'(TableSize)) ? desc.d_max[AddrW-1:0] : AddrW'(TableSize - 1);
+
+  logic [15:0] d_limit_q;
+  always_ff @(posedge clk_i) d_limit_q <= cfg_d_limit_q4_i;
+
+  logic [FW-1:0] s0_fields_q;
+  logic s0_status_q, s0_last_q, s0_meas_q, s0_tc_q;
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      s0_fields_q <= fields;
+      s0_status_q <= in_status;
+      s0_last_q   <= in_last_i;
+      // measurable: 1 px <= d_max, and d_max >= 0 as int16 (labelling's invalid codes)
+      s0_meas_q   <= !desc.d_max[15] && desc.d_max[14:4] != '0;
+      s0_tc_q     <= desc.d_max >= d_limit_q;
+    end
+  end
+
+  logic [28:0] s0_recip;
+  scw_warning_recip #(.Entries(TableSize)) u_recip (
+    .clk_i, .en_i(en), .addr_i(addr), .data_o(s0_recip)
+  );
+
+  // ---- S1 .. S(Stages-1) --------------------------------------------------------------------
+  logic [Stages-1:0] valid_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) valid_q <= '0;
+    else if (en) valid_q <= Stages'({valid_q, in_valid_i});
+  end
+
+  logic [FW-1:0] w_fields;
+  logic w_status, w_last;
+  scw_warning_delay #(.Width(FW + 2), .Depth(Stages - 1)) u_word_delay (
+    .clk_i, .en_i(en), .d_i({s0_status_q, s0_last_q, s0_fields_q}),
+    .q_o({w_status, w_last, w_fields})
+  );
+
+  logic w_obst, w_tun, w_tc;
+  logic [1:0] w_sev;
+  logic signed [DW-1:0] w_dist, w_dj;
+  scw_warning_object #(.OutStages(Stages - 1)) u_object (
+    .clk_i,
+    .en_i                  (en),
+    .cfg_baseline_q8_i,
+    .cfg_focal_q4_i,
+    .cfg_cu_q4_i,
+    .cfg_cv_q4_i,
+    .cfg_veh_x_mm_i,
+    .cfg_veh_y_mm_i,
+    .cfg_veh_z_mm_i,
+    .cfg_tunnel_half_w_mm_i,
+    .cfg_tunnel_h_mm_i,
+    .cfg_high_mm_i,
+    .cfg_medium_mm_i,
+    .cfg_near_mm_i,
+    .cfg_min_height_mm_i,
+    .recip_i               (s0_recip),
+    .closest_x_i           (s0_fields_q[0 +: 16]),
+    .closest_y_i           (s0_fields_q[16 +: 16]),
+    .x_min_i               (s0_fields_q[48 +: 16]),
+    .x_max_i               (s0_fields_q[64 +: 16]),
+    .y_min_i               (s0_fields_q[80 +: 16]),
+    .y_max_i               (s0_fields_q[96 +: 16]),
+    .measurable_i          (s0_meas_q),
+    .too_close_i           (s0_tc_q),
+    .obstacle_o            (w_obst),
+    .severity_o            (w_sev),
+    .in_tunnel_o           (w_tun),
+    .too_close_o           (w_tc),
+    .distance_o            (w_dist),
+    .judged_o              (w_dj)
+  );
+
+  // ---- fold ---------------------------------------------------------------------------------
+  // The accumulator is the model's FrameResult acc_ (without the flags, which only the closing
+  // word sets) plus whether an obstacle was seen and the deciding one's judged distance.
+  logic [1:0] sev_q, sev_d, sev_f;
+  logic tun_q, tun_d, tun_f, tc_q, tc_d, tc_f, best_q, best_d;
+  logic [15:0] objs_q, objs_d, objs_f, obst_q, obst_d, obst_f, idx_q, idx_d, idx_f;
+  logic signed [DW-1:0] dist_q, dist_d, dist_f, dj_q, dj_d;
+  logic [FW-1:0] fld_q, fld_d, fld_f;
+  logic out_valid_q, out_valid_d;
+  logic [OutW-1:0] out_q, out_d;
+
+  logic w_valid, w_obj, better, upd, close, st_err;
+  logic [31:0] st_objects;
+  logic [2:0] st_flags;
+  assign w_valid    = valid_q[Stages-1];
+  assign w_obj      = w_valid && !w_status;
+  assign st_objects = w_fields[31:0];
+  assign st_flags   = w_fields[34:32];  // {stream_error, object_overflow, tile_overflow}
+
+  always_comb begin
+    better = !best_q || w_sev > sev_q || (w_sev == sev_q && w_dj < dj_q);
+    upd    = w_obj && w_obst && better;
+    close  = w_valid && (w_status || w_last);
+    st_err = st_flags[2] || !w_last || st_objects != {16'b0, objs_q};
+
+    // _f: the accumulator with the word folded in
+    objs_f = objs_q + 16'(w_obj);
+    obst_f = obst_q + 16'(w_obj && w_obst);
+    sev_f  = upd ? w_sev : sev_q;
+    tun_f  = upd ? w_tun : tun_q;
+    tc_f   = upd ? w_tc : tc_q;
+    idx_f  = upd ? objs_q : idx_q;
+    dist_f = upd ? w_dist : dist_q;
+    fld_f  = upd ? w_fields : fld_q;
+    dj_d   = upd ? w_dj : dj_q;
+
+    // the frame's result, taken when it closes
+    out_d = {fld_f, {{(32 - DW){dist_f[DW-1]}}, dist_f}, idx_f, obst_f, objs_f,
+             w_status ? st_err : 1'b1, w_status && st_flags[1], w_status && st_flags[0], tc_f,
+             tun_f, sev_f};
+    out_valid_d = close || (out_valid_q && !out_ready_i);
+
+    // a closed frame leaves the next one FrameResult{}
+    sev_d  = close ? '0 : sev_f;
+    tun_d  = close ? 1'b0 : tun_f;
+    tc_d   = close ? 1'b0 : tc_f;
+    best_d = close ? 1'b0 : best_q || upd;
+    objs_d = close ? '0 : objs_f;
+    obst_d = close ? '0 : obst_f;
+    idx_d  = close ? '1 : idx_f;
+    dist_d = close ? '0 : dist_f;
+    fld_d  = close ? '0 : fld_f;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      out_valid_q <= 1'b0;
+      sev_q  <= '0;
+      tun_q  <= 1'b0;
+      tc_q   <= 1'b0;
+      best_q <= 1'b0;
+      objs_q <= '0;
+      obst_q <= '0;
+      idx_q  <= '1;
+      dist_q <= '0;
+      fld_q  <= '0;
+    end else if (en) begin
+      out_valid_q <= out_valid_d;
+      sev_q  <= sev_d;
+      tun_q  <= tun_d;
+      tc_q   <= tc_d;
+      best_q <= best_d;
+      objs_q <= objs_d;
+      obst_q <= obst_d;
+      idx_q  <= idx_d;
+      dist_q <= dist_d;
+      fld_q  <= fld_d;
+    end
+  end
+
+  // Only read while best_q is set, which a reset or a closed frame clears.
+  always_ff @(posedge clk_i) begin
+    if (en) dj_q <= dj_d;
+  end
+  always_ff @(posedge clk_i) begin
+    if (en && close) out_q <= out_d;
+  end
+
+  assign out_valid_o = out_valid_q;
+  assign out_data_o  = out_q;
+  assign out_last_o  = 1'b1;  // one word per frame
+
+  // A status word carries no more than objects and three flags; the other descriptor fields
+  // (area, moments, first pixel, d_min) are not part of the warning.
+  logic unused_in;
+  assign unused_in = ^{desc.m03, desc.m12, desc.m21, desc.m30, desc.m02, desc.m11, desc.m20,
+                       desc.m01, desc.m10, desc.first_y, desc.first_x, desc.d_min};
+endmodule

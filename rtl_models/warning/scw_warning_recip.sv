@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: Apache-2.0
+// Warning stage: the reciprocal table round(2^32 / dq) as a ROM read through a register.
+`default_nettype none
+
+// recip(dq) of hls/warning for the Q11.4 disparity codes 16 .. Entries - 1; the entries below
+// 16 (under one pixel) are never measurable, so they hold 0 (recip(0) would divide by zero).
+// The contents come from a constant function in an initial loop: Verilator runs it at time 0,
+// Yosys 0.23 evaluates it into the memory's init value, and the registered read (with the
+// pipeline enable as read enable) lets it map the table to block RAM.
+module scw_warning_recip #(
+  parameter int unsigned Entries = 1024,  // 16 * MaxDisparityPx
+  localparam int unsigned AddrW = $clog2(Entries)
+) (
+  input  logic             clk_i,
+  input  logic             en_i,
+  input  logic [AddrW-1:0] addr_i,  // < Entries (the caller clamps)
+  output logic [28:0]      data_o   // recip(addr_i), one enabled clock later
+);
+  if (Entries < 32 || Entries > 32768) begin : gen_bad
+    $error("scw_warning_recip: Entries is 16 * MaxDisparityPx, 32 .. 32768");
+  end
+
+  // (2^32 + dq / 2) / dq <= 2^28 for dq >= 16: 29 bits.
+  function automatic logic [28:0] recip(input logic [31:0] dq);
+    logic [63:0] num;
+    num = (64'd1 << 32) + (64'(dq) >> 1);
+    if (dq < 32'd16) recip = '0;
+    else recip = 29'(num / 64'(dq));
+  endfunction
+
+  logic [28:0] rom [Entries];
+  initial begin
+    for (int i = 0; i < Entries; i++) rom[i] = recip(32'(i));
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) data_o <= rom[addr_i];
+  end
+endmodule

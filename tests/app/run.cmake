@@ -1,0 +1,50 @@
+# SPDX-License-Identifier: Apache-2.0
+# The whole chain: a synthetic street pair through app::Runner (the box ahead decides, at the
+# distance its disparity gives), and `scw run` end to end on Tsukuba, on a sequence, and on
+# inputs it must refuse with a message.
+add_executable(test_run app/test_run.cpp)
+target_link_libraries(test_run PRIVATE scw_test_main scw::host)
+scw_warnings(test_run)
+catch_discover_tests(test_run TEST_PREFIX "app:")
+
+set(scw_tsu "${PROJECT_SOURCE_DIR}/data/tsukuba")
+# Tsukuba's camera is not published with the pair: f 615 px and b 0.1 m are assumed for the demo.
+set(scw_tsu_run "--rectified --focal 615 --baseline 0.1 --window 9 --min-disp 0 --max-disp 15 \
+                 --min-area 50")
+add_test(NAME "app:cli run writes every picture and a results line with the required keys"
+         COMMAND bash -c "rm -rf cli_run && '$<TARGET_FILE:scw>' run ${scw_tsu_run} \
+                          --left '${scw_tsu}/scene1.row3.col3.ppm' \
+                          --right '${scw_tsu}/scene1.row3.col4.ppm' --out-dir cli_run && \
+                          for f in left_rect.png right_rect.png disparity.png disparity16.png \
+                          labels.png labels_color.png overlay.png objects.csv results.jsonl; do \
+                          test -s cli_run/$f || { echo missing $f; exit 1; }; done && \
+                          test $(wc -l < cli_run/results.jsonl) -eq 1 && \
+                          for k in frame severity distance_m closest_uv disparity bbox objects \
+                          flags; do grep -q \"\\\"$k\\\":\" cli_run/results.jsonl || \
+                          { echo missing key $k; exit 1; }; done"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+add_test(NAME "app:cli run on a sequence writes one line per pair and shows progress"
+         COMMAND bash -c "rm -rf cli_seq cli_seq_out && mkdir cli_seq && for i in 0001 0002 0003; \
+                          do cp '${scw_tsu}/scene1.row3.col3.ppm' cli_seq/\${i}_left.ppm && \
+                          cp '${scw_tsu}/scene1.row3.col4.ppm' cli_seq/\${i}_right.ppm; done && \
+                          '$<TARGET_FILE:scw>' run ${scw_tsu_run} --sequence cli_seq \
+                          --out-dir cli_seq_out 2> cli_seq.err && \
+                          test $(wc -l < cli_seq_out/results.jsonl) -eq 3 && \
+                          grep -q '3/3 frames' cli_seq.err && test -s cli_seq_out/0003_overlay.png"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+foreach(bad
+    "rectified without focal|--rectified --left '${scw_tsu}/scene1.row3.col3.ppm' --right '${scw_tsu}/scene1.row3.col4.ppm'|needs --focal"
+    "sizes differ|--rectified --focal 615 --baseline 0.1 --left '${scw_tsu}/scene1.row3.col3.ppm' --right '${PROJECT_SOURCE_DIR}/data/chessboard/right01.jpg'|differ in size"
+    "an empty sequence folder|--rectified --focal 615 --baseline 0.1 --sequence .|holds no pairs"
+    "a broken calibration|--calib '${scw_tsu}/scene1.row3.col3.ppm' --left '${scw_tsu}/scene1.row3.col3.ppm' --right '${scw_tsu}/scene1.row3.col4.ppm'|scene1.row3.col3.ppm"
+    "no camera at all|--left '${scw_tsu}/scene1.row3.col3.ppm' --right '${scw_tsu}/scene1.row3.col4.ppm'|give --calib")
+  string(REPLACE "|" ";" parts "${bad}")
+  list(GET parts 0 what)
+  list(GET parts 1 args)
+  list(GET parts 2 msg)
+  add_test(NAME "app:cli run refuses ${what} with a message"
+           COMMAND bash -c "rm -rf cli_bad && mkdir -p cli_empty && cd cli_empty && \
+                            ! '$<TARGET_FILE:scw>' run ${args} --out-dir ../cli_bad 2> err.txt && \
+                            grep -q -- '${msg}' err.txt"
+           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+endforeach()

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: Apache-2.0
+// Self-checking replay of a warning golden vector set against scw_warning: object tables driven
+// with idle cycles, output backpressure, every result word compared.
+`timescale 1ns / 1ps
+`default_nettype none
+
+// Run with the set's manifest.json config.cfg as plusargs: +vectors=<set folder> +baseline_q8
+// +focal_q4 +cu_q4 +cv_q4 +veh_x_mm +veh_y_mm +veh_z_mm (signed, in decimal) +tunnel_half_w_mm
+// +tunnel_h_mm +high_mm +medium_mm +near_mm +min_height_mm +d_limit_q4. Parameters:
+// config.max_disparity_px (the build), words_in, words_out (= frames: one result a frame).
+// +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
+// another).
+module tb_warning_replay #(
+  parameter int unsigned MaxDisparityPx = 128,
+  parameter int unsigned WordsIn        = 1,
+  parameter int unsigned WordsOut       = 1
+);
+  localparam int unsigned InW  = 1 + 32 + 10 * 16 + 9 * 64;     // sim/labelling_pack.hpp: 769
+  localparam int unsigned OutW = 2 + 5 + 3 * 16 + 32 + 7 * 16;  // sim/warning_pack.hpp: 199
+  localparam int unsigned Latency = 36;                         // hls::warning::kLatency
+  // Generous: the stage takes a word a clock unless its result waits; the source idles 1 clock
+  // in 4 and the sink 3 in 7.
+  localparam longint unsigned MaxCycles = 8 * (WordsIn + WordsOut) + 8 * Latency + 1000;
+
+  logic [InW:0]  in_mem  [WordsIn];   // {last, data[768:0]}
+  logic [OutW:0] exp_mem [WordsOut];  // {last, data[198:0]}
+  string dir;
+  int unsigned stalls = 1;
+  int baseline_q8, focal_q4, cu_q4, cv_q4, veh_x_mm, veh_y_mm, veh_z_mm, tunnel_half_w_mm,
+      tunnel_h_mm, high_mm, medium_mm, near_mm, min_height_mm, d_limit_q4;
+  // The cfg_* ports are static: they take their values at time 0, long before the first word.
+  initial begin
+    void'($value$plusargs("stalls=%d", stalls));
+    if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    if (!$value$plusargs("baseline_q8=%d", baseline_q8) ||
+        !$value$plusargs("focal_q4=%d", focal_q4) || !$value$plusargs("cu_q4=%d", cu_q4) ||
+        !$value$plusargs("cv_q4=%d", cv_q4) || !$value$plusargs("veh_x_mm=%d", veh_x_mm) ||
+        !$value$plusargs("veh_y_mm=%d", veh_y_mm) || !$value$plusargs("veh_z_mm=%d", veh_z_mm) ||
+        !$value$plusargs("tunnel_half_w_mm=%d", tunnel_half_w_mm) ||
+        !$value$plusargs("tunnel_h_mm=%d", tunnel_h_mm) ||
+        !$value$plusargs("high_mm=%d", high_mm) || !$value$plusargs("medium_mm=%d", medium_mm) ||
+        !$value$plusargs("near_mm=%d", near_mm) ||
+        !$value$plusargs("min_height_mm=%d", min_height_mm) ||
+        !$value$plusargs("d_limit_q4=%d", d_limit_q4))
+      $fatal(1, "give the set's config.cfg: +baseline_q8 +focal_q4 +cu_q4 +cv_q4 +veh_x_mm ",
+             "+veh_y_mm +veh_z_mm +tunnel_half_w_mm +tunnel_h_mm +high_mm +medium_mm +near_mm ",
+             "+min_height_mm +d_limit_q4");
+    $readmemh({dir, "/in.hex"}, in_mem);
+    $readmemh({dir, "/expected.hex"}, exp_mem);
+  end
+
+  logic clk = 1'b0, rst_n = 1'b0;
+  always #4 clk = ~clk;  // 125 MHz
+  initial #20 rst_n = 1'b1;
+
+  longint unsigned cyc = 0;
+  always_ff @(posedge clk) cyc <= cyc + 1;
+
+  // Source: offers on 3 of 4 cycles; a word once offered is held until taken.
+  int unsigned i = 0;
+  logic in_valid, in_ready, in_held = 1'b0;
+  logic [InW:0] in_word;
+  assign in_valid = rst_n && (i < WordsIn) && (((cyc % 4) != 3) || in_held || stalls == 0);
+  assign in_word  = in_mem[(i < WordsIn) ? i : 0];
+  always_ff @(posedge clk) begin
+    in_held <= in_valid && !in_ready;
+    if (in_valid && in_ready) i <= i + 1;
+  end
+
+  // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each word taken must be the next expected one.
+  int unsigned o = 0;
+  logic out_valid, out_ready, out_last;
+  logic [OutW-1:0] out_data;
+  assign out_ready = ((cyc % 7) inside {0, 1, 3, 6}) || stalls == 0;
+
+  scw_warning #(.MaxDisparityPx(MaxDisparityPx)) u_dut (
+    .clk_i(clk), .rst_ni(rst_n),
+    .cfg_baseline_q8_i(20'(baseline_q8)), .cfg_focal_q4_i(16'(focal_q4)),
+    .cfg_cu_q4_i(16'(cu_q4)), .cfg_cv_q4_i(16'(cv_q4)),
+    .cfg_veh_x_mm_i(16'(veh_x_mm)), .cfg_veh_y_mm_i(16'(veh_y_mm)),
+    .cfg_veh_z_mm_i(16'(veh_z_mm)),
+    .cfg_tunnel_half_w_mm_i(16'(tunnel_half_w_mm)), .cfg_tunnel_h_mm_i(16'(tunnel_h_mm)),
+    .cfg_high_mm_i(16'(high_mm)), .cfg_medium_mm_i(16'(medium_mm)),
+    .cfg_near_mm_i(16'(near_mm)), .cfg_min_height_mm_i(16'(min_height_mm)),
+    .cfg_d_limit_q4_i(16'(d_limit_q4)),
+    .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_word[InW-1:0]),
+    .in_last_i(in_word[InW]),
+    .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
+    .out_last_o(out_last)
+  );
+
+  // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
+  logic stalled = 1'b0;
+  logic [OutW:0] stalled_word;
+  always_ff @(posedge clk) begin
+    if (stalled && (out_valid !== 1'b1 || {out_last, out_data} !== stalled_word))
+      $fatal(1, "result %0d: out_valid or the word changed while stalled (cycle %0d)", o, cyc);
+    stalled <= out_valid && !out_ready;
+    stalled_word <= {out_last, out_data};
+  end
+
+  always_ff @(posedge clk) begin
+    if (cyc > MaxCycles)
+      $fatal(1, "timeout after %0d of %0d results (%0d of %0d words in)", o, WordsOut, i,
+             WordsIn);
+    if (rst_n && (in_ready === 1'bx || out_valid === 1'bx))
+      $fatal(1, "in_ready_o or out_valid_o is X (cycle %0d)", cyc);
+    if (out_valid && out_ready) begin
+      // One result a frame: frame o. Fields, lsb first: severity[1:0], in_tunnel, too_close,
+      // tile_overflow, object_overflow, stream_error, objects, obstacles, index, distance_mm, ...
+      if ({out_last, out_data} !== exp_mem[o])
+        $fatal(1, "frame %0d: got %h (severity %0d, index %0d, distance %0d mm), expected %h ",
+               o, {out_last, out_data}, out_data[1:0], out_data[54:39],
+               $signed(out_data[86:55]), exp_mem[o],
+               "(severity %0d, index %0d, distance %0d mm); see expected.csv row %0d",
+               exp_mem[o][1:0], exp_mem[o][54:39], $signed(exp_mem[o][86:55]), o);
+      o <= o + 1;
+      if (o + 1 == WordsOut) begin
+        if (i != WordsIn)
+          $fatal(1, "all results out, but only %0d of %0d words taken", i, WordsIn);
+        $display("PASS: %0d beats match %s (%0d words in, %0d cycles)", WordsOut, dir, WordsIn,
+                 cyc);
+        $finish;
+      end
+    end
+  end
+endmodule

@@ -1,0 +1,776 @@
+// SPDX-License-Identifier: Apache-2.0
+// [rtl] scw_warning against the warning model clock for clock (the same cycle trace) under every
+// stall pattern, both against a direct per-frame fold of evaluate(): random object tables that
+// reach every branch of the arithmetic, empty and back-to-back frames, broken tables, camera
+// set-ups from the Karlsruhe rig, the thesis and the ports' extremes.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "Vwarning_a.h"
+#include "Vwarning_a_scw_warning.h"
+#include "Vwarning_b.h"
+#include "Vwarning_b_scw_warning.h"
+#include "Vwarning_sqrt.h"
+#include "Vwarning_sqrt_scw_warning_sqrt.h"
+#include "hls/warning/warning_params.hpp"
+#include "host/warning/setup.hpp"
+#include "sim/stream_check.hpp"
+#include "sim/warning_model.hpp"
+#include "sim/warning_rtl.hpp"
+#include "tests/common/twin_check.hpp"
+
+namespace {
+
+namespace hw = scw::hls::warning;
+using hw::FrameResult;
+using hw::ObjectEval;
+using hw::ResultPacket;
+using hw::Severity;
+using hw::WarningConfig;
+using scw::hls::labelling::LabelPacket;
+using scw::hls::labelling::Object;
+using scw::host::warning::WarningSetup;
+using scw::sim::StallPattern;
+
+// tests/warning/rtl.cmake builds the same two with -G.
+using ParamsA = hw::WarningParams<64>;  // 1,024 table entries
+using ParamsB = hw::WarningParams<32>;  // 512: a table the Karlsruhe rig's close range overruns
+static_assert(scw::sim::warning_params_match<Vwarning_a_scw_warning, ParamsA>());
+static_assert(scw::sim::warning_params_match<Vwarning_b_scw_warning, ParamsB>());
+static_assert(Vwarning_a_scw_warning::Latency == hw::kLatency);
+// isqrt_round's loop: 27 root bits, so any n below 2^58 (three squares of 29-bit coordinates).
+static_assert(Vwarning_sqrt_scw_warning_sqrt::RootW == 27 &&
+              Vwarning_sqrt_scw_warning_sqrt::InW == 58);
+
+// ---- words ------------------------------------------------------------------------------------
+
+LabelPacket object_word(const Object& o, bool last = false) {
+  LabelPacket p;
+  p.data.is_status = false;
+  p.data.object = o;
+  p.last = last;
+  return p;
+}
+
+LabelPacket status_word(std::uint32_t objects, bool last = true, bool tile = false,
+                        bool object_overflow = false, bool stream_error = false) {
+  LabelPacket p;
+  p.data.is_status = true;
+  p.data.status.objects = objects;
+  p.data.status.tile_overflow = tile;
+  p.data.status.object_overflow = object_overflow;
+  p.data.status.stream_error = stream_error;
+  p.last = last;
+  return p;
+}
+
+/// A well-formed frame: the objects, then the status word counting them, with last.
+void append_frame(std::vector<LabelPacket>& words, const std::vector<Object>& objects,
+                  bool tile = false, bool object_overflow = false, bool stream_error = false) {
+  for (const auto& o : objects) words.push_back(object_word(o));
+  words.push_back(status_word(static_cast<std::uint32_t>(objects.size()), true, tile,
+                              object_overflow, stream_error));
+}
+
+// ---- the independent expectation --------------------------------------------------------------
+
+/// What the tables reached, counted over every object and frame folded.
+struct Coverage {
+  int not_measurable = 0, negative_code = 0, too_close = 0, past_table = 0, low = 0;
+  int tunnel[4] = {0, 0, 0, 0}, outside[4] = {0, 0, 0, 0};  // by severity
+  int negative_x = 0, negative_y = 0, negative_distance = 0, saturated_root = 0;
+  int ties = 0;         // frames where two obstacles tie in severity and judged distance
+  int close_ties = 0;   // ... both too close, at different distances
+  int no_obstacle = 0;  // frames with objects but no obstacle
+};
+
+std::int32_t judged(const ObjectEval& e) { return e.too_close ? 0 : e.distance_mm; }
+
+/// The frame results of `words` as the stage defines them, frame by frame: evaluate() on every
+/// object, the deciding obstacle by decides_over (the first of equals), the status word's flags,
+/// and stream_error where the table broke the packet rules. No clocks, no pipeline.
+template <typename Params>
+std::vector<FrameResult> fold_frames(const std::vector<LabelPacket>& words,
+                                     const WarningConfig& cfg, Coverage* cov = nullptr) {
+  std::vector<FrameResult> results;
+  std::vector<ObjectEval> evals;
+  std::vector<Object> objects;
+  for (const auto& w : words) {
+    if (!w.data.is_status) {
+      objects.push_back(w.data.object);
+      evals.push_back(hw::evaluate<Params>(w.data.object, cfg));
+      if (!w.last) continue;
+    }
+    FrameResult r;
+    r.objects = static_cast<std::uint16_t>(objects.size());
+    int best = -1;
+    for (std::size_t i = 0; i < evals.size(); ++i) {
+      if (!evals[i].obstacle) continue;
+      ++r.obstacles;
+      if (best < 0 || hw::decides_over(evals[i], evals[static_cast<std::size_t>(best)]))
+        best = static_cast<int>(i);
+    }
+    if (best >= 0) {
+      const ObjectEval& e = evals[static_cast<std::size_t>(best)];
+      const Object& o = objects[static_cast<std::size_t>(best)];
+      r.severity = e.severity;
+      r.in_tunnel = e.in_tunnel;
+      r.too_close = e.too_close;
+      r.index = static_cast<std::uint16_t>(best);
+      r.distance_mm = e.distance_mm;
+      r.closest_x = o.closest_x;
+      r.closest_y = o.closest_y;
+      r.d_max = o.d_max;
+      r.x_min = o.x_min;
+      r.x_max = o.x_max;
+      r.y_min = o.y_min;
+      r.y_max = o.y_max;
+    }
+    if (w.data.is_status) {
+      const auto& st = w.data.status;
+      r.tile_overflow = st.tile_overflow;
+      r.object_overflow = st.object_overflow;
+      r.stream_error = st.stream_error || !w.last || st.objects != objects.size();
+    } else {
+      r.stream_error = true;
+    }
+    results.push_back(r);
+
+    if (cov != nullptr) {
+      for (std::size_t i = 0; i < evals.size(); ++i) {
+        const ObjectEval& e = evals[i];
+        const Object& o = objects[i];
+        if (!e.measurable) {
+          ++cov->not_measurable;
+          if (o.d_max >= 0x8000u) ++cov->negative_code;
+          continue;
+        }
+        if (e.too_close) ++cov->too_close;
+        if (o.d_max >= Params::kTableSize) ++cov->past_table;
+        const auto sq = [](std::int64_t v) { return static_cast<std::uint64_t>(v * v); };
+        if (sq(e.x_mm) + sq(e.y_mm) + sq(e.z_mm) >= (std::uint64_t{1} << 54)) ++cov->saturated_root;
+        if (!e.obstacle) {
+          ++cov->low;
+          continue;
+        }
+        (e.in_tunnel ? cov->tunnel : cov->outside)[static_cast<int>(e.severity)]++;
+        if (e.x_mm < 0) ++cov->negative_x;
+        if (e.y_mm < 0) ++cov->negative_y;
+        if (e.distance_mm < 0) ++cov->negative_distance;
+        for (std::size_t j = 0; j < i; ++j) {
+          const ObjectEval& f = evals[j];
+          if (f.obstacle && f.severity == e.severity && judged(f) == judged(e)) {
+            ++cov->ties;
+            if (e.too_close && f.too_close && e.distance_mm != f.distance_mm) ++cov->close_ties;
+          }
+        }
+      }
+      if (!evals.empty() && best < 0) ++cov->no_obstacle;
+    }
+    evals.clear();
+    objects.clear();
+  }
+  return results;
+}
+
+// ---- object tables ----------------------------------------------------------------------------
+
+/// Random objects of every kind the stage tells apart, placed in 3D with the camera of `s` so
+/// that they land in (or next to) the tunnel at chosen distances, plus codes the table does not
+/// cover and plain random fields. Seeded: the same seed gives the same tables.
+class TableGen {
+ public:
+  TableGen(const WarningSetup& s, const WarningConfig& cfg, int table_size, std::uint64_t seed)
+      : s_(s), cfg_(cfg), table_(table_size), rng_(seed) {}
+
+  Object next() {
+    switch (pick(0, 11)) {
+      case 0:
+      case 1:
+        return in_tunnel(uni(0.3, s_.high_m));
+      case 2:
+        return in_tunnel(uni(s_.high_m, s_.medium_m));
+      case 3:
+        return in_tunnel(uni(s_.medium_m, 60.0));
+      case 4:
+        return outside(uni(0.02, s_.near_m), uni(1.0, 30.0));
+      case 5:
+        return outside(uni(s_.near_m + 0.05, 4.0), uni(1.0, 30.0));
+      case 6:
+        return low_object();
+      case 7:
+        return not_measurable();
+      case 8:
+        return with_code(random_box(), uni_code(table_, 0x7fff));  // past the table
+      case 9:  // too close, inside the table (when d_limit leaves room)
+        return with_code(random_box(),
+                         uni_code(std::min<int>(cfg_.d_limit_q4, table_ - 1), table_ - 1));
+      case 10:
+        return tie_of_last();
+      default:
+        return with_code(random_box(), uni_code(0, 2 * table_));
+    }
+  }
+
+  /// Frames of 0 .. max_objects objects (a few empty), each closed by its status word; the
+  /// labelling flags are set now and then, as an overflowing labelling stage would.
+  std::vector<LabelPacket> frames(int n, int max_objects) {
+    std::vector<LabelPacket> words;
+    for (int f = 0; f < n; ++f) {
+      std::vector<Object> objs;
+      switch (pick(0, 6)) {
+        case 0:
+          break;
+        case 1:  // objects, but none an obstacle
+          for (int i = pick(1, 4); i > 0; --i)
+            objs.push_back(pick(0, 1) ? low_object() : not_measurable());
+          break;
+        default:
+          for (int i = pick(1, max_objects); i > 0; --i) objs.push_back(next());
+      }
+      append_frame(words, objs, pick(0, 6) == 0, pick(0, 6) == 0, pick(0, 9) == 0);
+    }
+    return words;
+  }
+
+  /// Uniformly random fields: boxes inside out, points outside them, any code.
+  Object random_fields() {
+    Object o = noise();
+    o.x_min = u16();
+    o.x_max = u16();
+    o.y_min = u16();
+    o.y_max = u16();
+    o.closest_x = u16();
+    o.closest_y = u16();
+    // 1 .. 3 px now and then: at the widest settings that is where the root saturates.
+    switch (pick(0, 3)) {
+      case 0:
+        o.d_max = u16();
+        break;
+      case 1:
+        o.d_max = static_cast<std::uint16_t>(pick(16, 48));
+        break;
+      default:
+        o.d_max = static_cast<std::uint16_t>(pick(16, 2 * table_));
+    }
+    last_ = o;
+    return o;
+  }
+
+ private:
+  double uni(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
+  int pick(int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng_); }
+  std::uint16_t u16() { return static_cast<std::uint16_t>(pick(0, 0xffff)); }
+  std::uint16_t uni_code(int lo, int hi) { return static_cast<std::uint16_t>(pick(lo, hi)); }
+  static std::uint16_t px(double v) {
+    return static_cast<std::uint16_t>(std::clamp(std::lround(v), 0L, 65535L));
+  }
+
+  /// What the stage must ignore: area, d_min, the first pixel and the moments.
+  Object noise() {
+    Object o;
+    o.area = static_cast<std::uint32_t>(rng_());
+    o.first_x = u16();
+    o.first_y = u16();
+    for (std::uint64_t* m :
+         {&o.m10, &o.m01, &o.m20, &o.m11, &o.m02, &o.m30, &o.m21, &o.m12, &o.m03})
+      *m = rng_();
+    return o;
+  }
+
+  /// The box [xl, xr] x [yb, yt] (camera coordinates, m) at depth z through the camera.
+  Object box(double xl, double xr, double yb, double yt, double z) {
+    Object o = noise();
+    const double f = s_.focal_px;
+    o.x_min = px(s_.cu_px + f * xl / z);
+    o.x_max = px(s_.cu_px + f * xr / z);
+    o.y_min = px(s_.cv_px - f * yt / z);
+    o.y_max = px(s_.cv_px - f * yb / z);
+    o.closest_x = static_cast<std::uint16_t>(pick(o.x_min, o.x_max));
+    o.closest_y = static_cast<std::uint16_t>(pick(o.y_min, o.y_max));
+    o.d_max = px(16.0 * f * s_.baseline_m / z);
+    o.d_min = static_cast<std::uint16_t>(pick(0, o.d_max));
+    last_ = o;
+    return o;
+  }
+
+  double tx() const { return s_.vehicle_origin.x(); }
+  double ty() const { return s_.vehicle_origin.y(); }
+  double tz() const { return s_.vehicle_origin.z(); }
+
+  /// Standing on the road in the tunnel, `dist` m ahead of the bumper.
+  Object in_tunnel(double dist) {
+    const double hwm = s_.tunnel_half_width_m(), w = uni(0.2, 2.0), c = uni(-hwm, hwm);
+    const double yb = ty() + uni(0.0, 0.3);
+    return box(tx() + c - w / 2, tx() + c + w / 2, yb, yb + uni(s_.min_height_m + 0.05, 2.2),
+               tz() + dist);
+  }
+  /// Beside or above the tunnel, `gap` m from it.
+  Object outside(double gap, double dist) {
+    const double hwm = s_.tunnel_half_width_m(), w = uni(0.2, 2.0);
+    const double yb = ty() + uni(0.0, 0.3), yt = yb + uni(s_.min_height_m + 0.05, 2.2);
+    switch (pick(0, 2)) {
+      case 0:
+        return box(tx() + hwm + gap, tx() + hwm + gap + w, yb, yt, tz() + dist);
+      case 1:
+        return box(tx() - hwm - gap - w, tx() - hwm - gap, yb, yt, tz() + dist);
+      default: {
+        const double top = ty() + s_.tunnel_height_m() + gap;
+        return box(tx() - w / 2, tx() + w / 2, top, top + uni(0.6, 2.0), tz() + dist);
+      }
+    }
+  }
+  /// Lower than min_height: a kerb, a road marking.
+  Object low_object() {
+    const double w = uni(0.2, 3.0), c = uni(-3.0, 3.0), yb = ty() + uni(0.0, 0.05);
+    return box(tx() + c - w / 2, tx() + c + w / 2, yb, yb + uni(0.0, s_.min_height_m - 0.08),
+               tz() + uni(0.5, 40.0));
+  }
+  Object not_measurable() {
+    Object o = in_tunnel(uni(0.5, 30.0));
+    o.d_max = pick(0, 1) ? static_cast<std::uint16_t>(pick(0, 15))
+                         : static_cast<std::uint16_t>(pick(0x8000, 0xffff));
+    last_ = o;
+    return o;
+  }
+  Object random_box() {
+    return box(uni(-8.0, 6.0), uni(6.0, 9.0), uni(-3.0, 0.0), uni(0.0, 4.0), uni(1.0, 60.0));
+  }
+  Object with_code(Object o, std::uint16_t code) {
+    o.d_max = code;
+    last_ = o;
+    return o;
+  }
+  /// The previous object again (a tie in everything), or its closest point and code under
+  /// another box (a tie in severity and distance, most of the time).
+  Object tie_of_last() {
+    Object o = last_;
+    if (pick(0, 1)) {
+      o.x_min = static_cast<std::uint16_t>(std::max(0, o.x_min - pick(0, 3)));
+      o.x_max = static_cast<std::uint16_t>(std::min(65535, o.x_max + pick(0, 3)));
+      o.y_min = static_cast<std::uint16_t>(std::max(0, o.y_min - pick(0, 3)));
+      o.area = static_cast<std::uint32_t>(rng_());
+    }
+    return o;
+  }
+
+  WarningSetup s_;
+  WarningConfig cfg_;
+  int table_;
+  std::mt19937_64 rng_;
+  Object last_{};
+};
+
+// ---- runs -------------------------------------------------------------------------------------
+
+/// The model and the RTL on `words` under every stall pattern until `frames_n` results have
+/// left: the same cycle trace and outputs (check_twin_runs), and every result equal to
+/// `expected`.
+template <typename VM, typename Params>
+void check_twins(const std::vector<LabelPacket>& words, const WarningConfig& cfg,
+                 const std::vector<FrameResult>& expected) {
+  for (const auto& pattern : StallPattern::all(3)) {
+    INFO("stalls " << pattern.name());
+    scw::sim::WarningModel<Params> cpp(cfg);
+    auto rtl = scw::sim::make_warning_rtl<VM, Params>("warning", cfg);
+    const auto rc = scw::sim::run_stream(cpp, words, pattern, expected.size(), 200'000);
+    const auto rr = scw::sim::run_stream(rtl, words, pattern, expected.size(), 200'000);
+    scw::test::check_twin_runs(rc, rr);
+    REQUIRE(rr.out.size() == expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      INFO("frame " << i);
+      CHECK(rr.out[i].last);
+      CHECK(rr.out[i].data == expected[i]);
+    }
+  }
+}
+
+template <typename VM, typename Params>
+Coverage check_tables(const std::vector<LabelPacket>& words, const WarningConfig& cfg) {
+  Coverage cov;
+  const auto expected = fold_frames<Params>(words, cfg, &cov);
+  check_twins<VM, Params>(words, cfg, expected);
+  return cov;
+}
+
+struct Camera {
+  const char* name;
+  double f, b, cu, cv;
+};
+// Karlsruhe sequences (1344 x 391) and the thesis's rig (640 x 480).
+constexpr Camera kKarlsruhe{"Karlsruhe-like", 700.0, 0.54, 672.0, 195.0};
+constexpr Camera kThesis{"thesis-like", 1000.0, 0.6, 640.0, 240.0};
+
+WarningSetup setup_of(const Camera& c, double d_limit_px) {
+  WarningSetup s;
+  s.focal_px = c.f;
+  s.baseline_m = c.b;
+  s.cu_px = c.cu;
+  s.cv_px = c.cv;
+  s.d_limit_px = d_limit_px;
+  return s;
+}
+
+void require_full_coverage(const Coverage& c) {
+  CHECK(c.not_measurable > 0);
+  CHECK(c.negative_code > 0);
+  CHECK(c.too_close > 0);
+  CHECK(c.past_table > 0);
+  CHECK(c.low > 0);
+  for (int s = 1; s <= 3; ++s) {
+    INFO("severity " << s);
+    CHECK(c.tunnel[s] > 0);
+  }
+  CHECK(c.outside[1] > 0);
+  CHECK(c.outside[2] > 0);
+  CHECK(c.outside[3] == 0);  // outside the tunnel is at most medium
+  CHECK(c.negative_x > 0);
+  CHECK(c.negative_y > 0);
+  CHECK(c.ties > 0);
+  CHECK(c.close_ties > 0);
+  CHECK(c.no_obstacle > 0);
+}
+
+}  // namespace
+
+TEST_CASE("scw_warning equals the model and the direct fold on random tables", "[warning][rtl]") {
+  for (const Camera& cam : {kKarlsruhe, kThesis}) {
+    // d_limit at the table's end, and inside it (codes between are too close but in the table).
+    for (double d_limit : {64.0, 48.0}) {
+      DYNAMIC_SECTION(cam.name << ", d_limit " << d_limit << " px, 64 px table") {
+        const WarningSetup s = setup_of(cam, d_limit);
+        const WarningConfig cfg = scw::host::warning::to_fixed(s);
+        TableGen gen(s, cfg, ParamsA::kTableSize, 1000 + static_cast<std::uint64_t>(d_limit));
+        const auto words = gen.frames(40, 40);
+        require_full_coverage(check_tables<Vwarning_a, ParamsA>(words, cfg));
+      }
+    }
+  }
+}
+
+TEST_CASE("scw_warning with a 32 px table equals the model and the direct fold", "[warning][rtl]") {
+  for (const Camera& cam : {kKarlsruhe, kThesis}) {
+    for (double d_limit : {32.0, 20.0}) {
+      DYNAMIC_SECTION(cam.name << ", d_limit " << d_limit << " px, 32 px table") {
+        const WarningSetup s = setup_of(cam, d_limit);
+        const WarningConfig cfg = scw::host::warning::to_fixed(s);
+        TableGen gen(s, cfg, ParamsB::kTableSize, 2000 + static_cast<std::uint64_t>(d_limit));
+        const auto words = gen.frames(30, 30);
+        const Coverage c = check_tables<Vwarning_b, ParamsB>(words, cfg);
+        CHECK(c.past_table > 0);
+        CHECK(c.too_close > 0);
+        CHECK(c.tunnel[3] > 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("scw_warning equals the model at the extremes of every port", "[warning][rtl]") {
+  // The widest products and sums the ports allow: 4 km baseline, 4096 px focal length, boxes
+  // anywhere in 0 .. 65535, the vehicle at the int16 corners; the root saturates (n >= 2^54).
+  WarningConfig wide;
+  wide.baseline_q8 = (1u << 20) - 1;
+  wide.focal_q4 = 0xffff;
+  wide.cu_q4 = 0;
+  wide.cv_q4 = 0xffff;
+  wide.veh_x_mm = 32767;
+  wide.veh_y_mm = -32768;
+  wide.veh_z_mm = 32767;
+  wide.tunnel_half_w_mm = 0xffff;
+  wide.tunnel_h_mm = 0xffff;
+  wide.high_mm = 0xffff;
+  wide.medium_mm = 0xffff;
+  wide.near_mm = 0xffff;
+  wide.min_height_mm = 0;
+  wide.d_limit_q4 = ParamsA::kTableSize;
+  // The narrowest: 1/256 mm baseline, 1/16 px focal length, zero tunnel and thresholds (too
+  // close is then medium = 0: low outside the tunnel), the highest minimum height.
+  WarningConfig narrow;
+  narrow.baseline_q8 = 1;
+  narrow.focal_q4 = 1;
+  narrow.cu_q4 = 0xffff;
+  narrow.cv_q4 = 0;
+  narrow.veh_x_mm = -32768;
+  narrow.veh_y_mm = 32767;
+  narrow.veh_z_mm = -32768;
+  narrow.d_limit_q4 = 16;
+  // Everything an obstacle, in a tunnel of zero size, the bumper 32.8 m ahead of the camera:
+  // objects behind it have negative distances.
+  WarningConfig zero_height = narrow;
+  zero_height.min_height_mm = 0;
+  zero_height.baseline_q8 = 12345;
+  zero_height.focal_q4 = 9999;
+  zero_height.veh_z_mm = 32767;
+  for (const auto& [name, cfg] : {std::pair<const char*, WarningConfig>{"widest", wide},
+                                  {"narrowest", narrow},
+                                  {"zero tunnel", zero_height}}) {
+    DYNAMIC_SECTION(name) {
+      TableGen gen(setup_of(kKarlsruhe, 64.0), cfg, ParamsA::kTableSize, 77);
+      std::vector<LabelPacket> words;
+      for (int f = 0; f < 25; ++f) {
+        std::vector<Object> objs;
+        for (int i = 0; i < f % 9; ++i) objs.push_back(gen.random_fields());
+        append_frame(words, objs);
+      }
+      const Coverage c = check_tables<Vwarning_a, ParamsA>(words, cfg);
+      if (std::string(name) == "widest") CHECK(c.saturated_root >= 3);
+      if (std::string(name) == "zero tunnel") CHECK(c.negative_distance > 0);
+    }
+  }
+  SECTION("random configurations") {
+    std::mt19937_64 rng(5);
+    auto u = [&rng](int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng); };
+    for (int k = 0; k < 4; ++k) {
+      WarningConfig cfg;
+      cfg.baseline_q8 = static_cast<std::uint32_t>(u(1, (1 << 20) - 1));
+      cfg.focal_q4 = static_cast<std::uint16_t>(u(1, 0xffff));
+      cfg.cu_q4 = static_cast<std::uint16_t>(u(0, 0xffff));
+      cfg.cv_q4 = static_cast<std::uint16_t>(u(0, 0xffff));
+      cfg.veh_x_mm = static_cast<std::int16_t>(u(-32768, 32767));
+      cfg.veh_y_mm = static_cast<std::int16_t>(u(-32768, 32767));
+      cfg.veh_z_mm = static_cast<std::int16_t>(u(-32768, 32767));
+      cfg.tunnel_half_w_mm = static_cast<std::uint16_t>(u(0, 0xffff));
+      cfg.tunnel_h_mm = static_cast<std::uint16_t>(u(0, 0xffff));
+      cfg.high_mm = static_cast<std::uint16_t>(u(0, 0xffff));
+      cfg.medium_mm = static_cast<std::uint16_t>(u(cfg.high_mm, 0xffff));
+      cfg.near_mm = static_cast<std::uint16_t>(u(0, 0xffff));
+      cfg.min_height_mm = static_cast<std::uint16_t>(u(0, 0xffff));
+      cfg.d_limit_q4 = static_cast<std::uint16_t>(u(16, ParamsB::kTableSize));
+      INFO("configuration " << k);
+      TableGen gen(setup_of(kThesis, 32.0), cfg, ParamsB::kTableSize, 300 + k);
+      std::vector<LabelPacket> words;
+      for (int f = 0; f < 12; ++f) {
+        std::vector<Object> objs;
+        for (int i = 0; i < (f * 5) % 11; ++i) objs.push_back(gen.random_fields());
+        append_frame(words, objs);
+      }
+      check_tables<Vwarning_b, ParamsB>(words, cfg);
+    }
+  }
+}
+
+TEST_CASE("scw_warning passes empty and back-to-back frames like the model", "[warning][rtl]") {
+  const WarningSetup s = setup_of(kKarlsruhe, 64.0);
+  const WarningConfig cfg = scw::host::warning::to_fixed(s);
+  TableGen gen(s, cfg, ParamsA::kTableSize, 9);
+  SECTION("status words only") {
+    std::vector<LabelPacket> words;
+    for (int f = 0; f < 50; ++f) append_frame(words, {}, f % 3 == 0, f % 5 == 0, f % 7 == 0);
+    const auto expected = fold_frames<ParamsA>(words, cfg);
+    for (const auto& r : expected) {
+      CHECK(r.severity == Severity::kNone);
+      CHECK(r.index == 0xffff);
+      CHECK(r.objects == 0);
+    }
+    check_twins<Vwarning_a, ParamsA>(words, cfg, expected);
+  }
+  SECTION("one-object frames, empty frames between") {
+    std::vector<LabelPacket> words;
+    for (int f = 0; f < 60; ++f)
+      append_frame(words, f % 4 == 3 ? std::vector<Object>{} : std::vector<Object>{gen.next()});
+    check_twins<Vwarning_a, ParamsA>(words, cfg, fold_frames<ParamsA>(words, cfg));
+  }
+  SECTION("frames shorter and longer than the pipeline") {
+    std::vector<LabelPacket> words;
+    for (int n : {2, 34, 35, 36, 0, 1, 70, 3}) {
+      std::vector<Object> objs;
+      for (int i = 0; i < n; ++i) objs.push_back(gen.next());
+      append_frame(words, objs);
+    }
+    check_twins<Vwarning_a, ParamsA>(words, cfg, fold_frames<ParamsA>(words, cfg));
+  }
+}
+
+TEST_CASE("scw_warning flags broken tables like the model, the next frame correct",
+          "[warning][rtl]") {
+  const WarningSetup s = setup_of(kThesis, 64.0);
+  const WarningConfig cfg = scw::host::warning::to_fixed(s);
+  TableGen gen(s, cfg, ParamsA::kTableSize, 21);
+  auto objects = [&gen](int n) {
+    std::vector<Object> v;
+    for (int i = 0; i < n; ++i) v.push_back(gen.next());
+    return v;
+  };
+  const auto good = objects(6);
+  // `words` and then a good frame: the first `frames_n` results flag an error (when
+  // `broken`), the last is clean.
+  auto check = [&](std::vector<LabelPacket> words, std::size_t frames_n, bool broken = true) {
+    append_frame(words, good);
+    const auto expected = fold_frames<ParamsA>(words, cfg);
+    REQUIRE(expected.size() == frames_n + 1);
+    for (std::size_t i = 0; i < frames_n; ++i) CHECK(expected[i].stream_error == broken);
+    CHECK_FALSE(expected.back().stream_error);
+    CHECK(expected.back().objects == good.size());
+    check_twins<Vwarning_a, ParamsA>(words, cfg, expected);
+  };
+  SECTION("a status word without last") {
+    std::vector<LabelPacket> words;
+    for (const auto& o : objects(5)) words.push_back(object_word(o));
+    words.push_back(status_word(5, false));
+    words.push_back(status_word(0, false));  // an empty frame, also without last
+    check(words, 2);
+  }
+  SECTION("last on an object word, no status") {
+    std::vector<LabelPacket> words;
+    const auto objs = objects(4);
+    for (std::size_t i = 0; i < objs.size(); ++i)
+      words.push_back(object_word(objs[i], i + 1 == objs.size()));
+    words.push_back(object_word(objects(1)[0], true));  // a frame of one such word
+    check(words, 2);
+  }
+  SECTION("the wrong object count") {
+    std::vector<LabelPacket> words;
+    for (std::uint32_t claimed : {4u, 6u, 0u, 65536u + 5u}) {
+      for (const auto& o : objects(5)) words.push_back(object_word(o));
+      words.push_back(status_word(claimed));
+    }
+    check(words, 4);
+  }
+  SECTION("the labelling stage's own flags pass through") {
+    std::vector<LabelPacket> words;
+    append_frame(words, objects(3), true, false, false);
+    append_frame(words, objects(3), false, true, false);
+    append_frame(words, {}, true, true, false);
+    const auto expected = fold_frames<ParamsA>(words, cfg);
+    CHECK(expected[0].tile_overflow);
+    CHECK(expected[1].object_overflow);
+    CHECK(expected[2].tile_overflow);
+    CHECK(expected[2].object_overflow);
+    check(words, 3, false);
+  }
+  SECTION("the labelling stage's stream error passes through") {
+    std::vector<LabelPacket> words;
+    append_frame(words, objects(3), false, false, true);
+    append_frame(words, {}, true, true, true);
+    check(words, 2);
+  }
+}
+
+TEST_CASE("scw_warning decides ties like the model: the earlier obstacle", "[warning][rtl]") {
+  const WarningSetup s = setup_of(kKarlsruhe, 64.0);
+  const WarningConfig cfg = scw::host::warning::to_fixed(s);
+  const double f = s.focal_px, b = s.baseline_m;
+  // A car-sized box in the lane, `dist` m from the bumper, shifted `dx` m sideways.
+  auto car = [&](double dist, double dx) {
+    const double z = s.vehicle_origin.z() + dist, x = s.vehicle_origin.x() + dx;
+    const double yb = s.vehicle_origin.y(), yt = yb + 1.5;
+    Object o;
+    o.x_min = static_cast<std::uint16_t>(std::lround(s.cu_px + f * (x - 0.9) / z));
+    o.x_max = static_cast<std::uint16_t>(std::lround(s.cu_px + f * (x + 0.9) / z));
+    o.y_min = static_cast<std::uint16_t>(std::lround(s.cv_px - f * yt / z));
+    o.y_max = static_cast<std::uint16_t>(std::lround(s.cv_px - f * yb / z));
+    o.closest_x = static_cast<std::uint16_t>((o.x_min + o.x_max) / 2);
+    o.closest_y = o.y_max;
+    o.d_max = static_cast<std::uint16_t>(std::lround(16.0 * f * b / z));
+    return o;
+  };
+  Object a = car(8.0, 0.0), a_wider = a;
+  a_wider.x_min = static_cast<std::uint16_t>(a.x_min - 2);
+  a_wider.x_max = static_cast<std::uint16_t>(a.x_max + 2);
+  // Too close at two distances: both judged at 0, so the first decides.
+  Object near1 = car(2.0, 0.0), near2 = car(1.0, 0.3);
+  const Object farther = car(15.0, 0.0);
+  std::vector<LabelPacket> words;
+  append_frame(words, {farther, a, a_wider});    // tie in severity and distance: index 1
+  append_frame(words, {a_wider, a, farther});    // index 0
+  append_frame(words, {farther, near1, near2});  // both too close: index 1
+  append_frame(words, {farther, near2, near1});  // index 1 again, the other object
+  const auto expected = fold_frames<ParamsA>(words, cfg);
+  REQUIRE(expected.size() == 4);
+  CHECK(expected[0].index == 1);
+  CHECK(expected[0].severity == Severity::kHigh);
+  CHECK(expected[1].index == 0);
+  CHECK(expected[1].x_min == a_wider.x_min);
+  CHECK(expected[2].index == 1);
+  CHECK(expected[2].too_close);
+  CHECK(expected[3].index == 1);
+  CHECK(expected[3].d_max == near2.d_max);
+  CHECK(expected[2].distance_mm != expected[3].distance_mm);
+  // The physics, roughly: a car 8 m ahead of the bumper is about 8 m away.
+  CHECK(std::abs(expected[0].distance_mm - 8000) < 200);
+  check_twins<Vwarning_a, ParamsA>(words, cfg, expected);
+}
+
+TEST_CASE("scw_warning shows a frame's result kLatency clocks after its status word",
+          "[warning][rtl]") {
+  const WarningSetup s = setup_of(kKarlsruhe, 64.0);
+  const WarningConfig cfg = scw::host::warning::to_fixed(s);
+  TableGen gen(s, cfg, ParamsA::kTableSize, 3);
+  std::vector<LabelPacket> words;
+  append_frame(words, {gen.next(), gen.next()});
+  const auto expected = fold_frames<ParamsA>(words, cfg);
+  scw::sim::WarningModel<ParamsA> cpp(cfg);
+  auto rtl = scw::sim::make_warning_rtl<Vwarning_a, ParamsA>("warning", cfg);
+  const StallPattern none{};
+  const auto rc = scw::sim::run_stream(cpp, words, none, 1);
+  const auto rr = scw::sim::run_stream(rtl, words, none, 1);
+  scw::test::check_twin_runs(rc, rr);
+  for (const auto* r : {&rc, &rr}) {
+    std::int64_t taken = -1, shown = -1;
+    for (std::size_t c = 0; c < r->trace.size(); ++c) {
+      const auto& t = r->trace[c];
+      if (t.in_valid && t.in_ready) taken = static_cast<std::int64_t>(c);  // the status word
+      if (t.out_valid && shown < 0) shown = static_cast<std::int64_t>(c);
+    }
+    CHECK(shown - taken == hw::kLatency);
+  }
+  REQUIRE(rr.out.size() == 1);
+  CHECK(rr.out[0].data == expected[0]);
+}
+
+TEST_CASE("scw_warning_sqrt equals isqrt_round at every rounding boundary", "[warning][rtl]") {
+  // Around r^2 (floor), r^2 + r (n - r^2 > r rounds up), for every r below 3000 and random
+  // ones up to 2^27, where the loop saturates; then n from 2^54 up (clamped), and random n.
+  std::vector<std::uint64_t> ns;
+  std::mt19937_64 rng(17);
+  std::vector<std::uint64_t> roots;
+  for (std::uint64_t r = 0; r < 3000; ++r) roots.push_back(r);
+  for (int i = 0; i < 3000; ++i) roots.push_back(rng() >> 37);
+  for (std::uint64_t r :
+       {(1ull << 26) - 1, 1ull << 26, (1ull << 27) - 2, (1ull << 27) - 1, 1ull << 27})
+    roots.push_back(r);
+  for (std::uint64_t r : roots)
+    for (std::uint64_t base : {r * r, r * r + r})
+      for (int d = -1; d <= 1; ++d)
+        if (base + static_cast<std::uint64_t>(d) < (1ull << 58) && (base > 0 || d >= 0))
+          ns.push_back(base + static_cast<std::uint64_t>(d));
+  for (std::uint64_t n :
+       {(1ull << 54) - 1, 1ull << 54, (1ull << 54) + 1, (1ull << 57), (1ull << 58) - 1})
+    ns.push_back(n);
+  for (int i = 0; i < 20000; ++i) ns.push_back(rng() >> (6 + rng() % 58));
+
+  using Sqrt = Vwarning_sqrt_scw_warning_sqrt;
+  const std::size_t latency = Sqrt::Latency;
+  VerilatedContext ctx;
+  auto m = std::make_unique<Vwarning_sqrt>(&ctx, "sqrt");
+  std::size_t fed = 0, bad = 0, checked = 0;
+  // Idle clocks (en low) now and then: the pipeline must hold.
+  while (fed < ns.size() + latency) {
+    const bool en = rng() % 4 != 0;
+    m->en_i = en;
+    m->n_i = ns[std::min(fed, ns.size() - 1)];
+    m->clk_i = 0;
+    m->eval();
+    m->clk_i = 1;
+    m->eval();
+    if (en) ++fed;
+    if (fed >= latency && fed - latency < ns.size()) {
+      const std::uint64_t n = ns[fed - latency];
+      ++checked;
+      if (m->root_o != hw::isqrt_round(n) && ++bad <= 5)
+        FAIL_CHECK("n = " << n << ": RTL " << m->root_o << ", isqrt_round " << hw::isqrt_round(n));
+    }
+  }
+  Verilated::threadContextp(&ctx);  // see sim/verilated_harness.hpp
+  m->final();
+  m.reset();
+  CHECK(checked >= ns.size());
+  CHECK(bad == 0);
+}
