@@ -24,6 +24,7 @@
 #include "sim/stream_check.hpp"
 #include "sim/warning_model.hpp"
 #include "sim/warning_rtl.hpp"
+#include "tests/warning/warning_tables.hpp"
 #include "tests/common/twin_check.hpp"
 
 namespace {
@@ -94,7 +95,7 @@ struct Coverage {
 std::int32_t judged(const ObjectEval& e) { return e.too_close ? 0 : e.distance_mm; }
 
 /// The frame results of `words` as the stage defines them, frame by frame: evaluate() on every
-/// object, the deciding obstacle by decides_over (the first of equals), the status word's flags,
+/// object, the deciding obstacle by fold_table (worst severity, nearest, first), the status flags,
 /// and stream_error where the table broke the packet rules. No clocks, no pipeline.
 template <typename Params>
 std::vector<FrameResult> fold_frames(const std::vector<LabelPacket>& words,
@@ -108,31 +109,8 @@ std::vector<FrameResult> fold_frames(const std::vector<LabelPacket>& words,
       evals.push_back(hw::evaluate<Params>(w.data.object, cfg));
       if (!w.last) continue;
     }
-    FrameResult r;
-    r.objects = static_cast<std::uint16_t>(objects.size());
-    int best = -1;
-    for (std::size_t i = 0; i < evals.size(); ++i) {
-      if (!evals[i].obstacle) continue;
-      ++r.obstacles;
-      if (best < 0 || hw::decides_over(evals[i], evals[static_cast<std::size_t>(best)]))
-        best = static_cast<int>(i);
-    }
-    if (best >= 0) {
-      const ObjectEval& e = evals[static_cast<std::size_t>(best)];
-      const Object& o = objects[static_cast<std::size_t>(best)];
-      r.severity = e.severity;
-      r.in_tunnel = e.in_tunnel;
-      r.too_close = e.too_close;
-      r.index = static_cast<std::uint16_t>(best);
-      r.distance_mm = e.distance_mm;
-      r.closest_x = o.closest_x;
-      r.closest_y = o.closest_y;
-      r.d_max = o.d_max;
-      r.x_min = o.x_min;
-      r.x_max = o.x_max;
-      r.y_min = o.y_min;
-      r.y_max = o.y_max;
-    }
+    // The objects' part is the shared plain fold (its own ordering key, not decides_over).
+    FrameResult r = scw::test::fold_table<Params>(objects, cfg);
     if (w.data.is_status) {
       const auto& st = w.data.status;
       r.tile_overflow = st.tile_overflow;
@@ -172,7 +150,7 @@ std::vector<FrameResult> fold_frames(const std::vector<LabelPacket>& words,
           }
         }
       }
-      if (!evals.empty() && best < 0) ++cov->no_obstacle;
+      if (!evals.empty() && r.index == 0xffff) ++cov->no_obstacle;
     }
     evals.clear();
     objects.clear();
