@@ -42,9 +42,11 @@ foreach(bad
   list(GET parts 0 what)
   list(GET parts 1 args)
   list(GET parts 2 msg)
+  # Each case has its own empty folder: ctest -j runs them side by side.
+  string(MAKE_C_IDENTIFIER "cli_bad_${what}" dir)
   add_test(NAME "app:cli run refuses ${what} with a message"
-           COMMAND bash -c "rm -rf cli_bad && mkdir -p cli_empty && cd cli_empty && \
-                            ! '$<TARGET_FILE:scw>' run ${args} --out-dir ../cli_bad 2> err.txt && \
-                            grep -q -- '${msg}' err.txt"
+           COMMAND bash -c "rm -rf ${dir} && mkdir -p ${dir}/empty && cd ${dir}/empty && \
+                            ! '$<TARGET_FILE:scw>' run ${args} --out-dir ../out 2> ../err.txt && \
+                            grep -q -- '${msg}' ../err.txt"
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endforeach()
