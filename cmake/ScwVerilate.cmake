@@ -1,18 +1,21 @@
 # SPDX-License-Identifier: Apache-2.0
 # scw_verilate(): one Verilated model of one RTL module at one parameter set.
 #
-#   scw_verilate(<target> TOP <module> PREFIX <Vname> [STAGE <dir>] [FILES <name.sv> ...]
-#                [PARAMS Name=Value ...])
+#   scw_verilate(<target> TOP <module> PREFIX <Vname> [STAGE <dir> ...] [FILES <name.sv> ...]
+#                [PARAMS Name=Value ...] [NO_TRACE])
 #
 # Reads the package, every primitive in rtl_models/common and, with STAGE, rtl_models/<dir>
-# (only the named FILES of it when given: a unit test of one block needs no more).
+# for each dir named (a top reads several; with FILES only the named files of the one STAGE:
+# a unit test of one block needs no more).
 # The C++ side declares the same parameter values once in a constexpr struct and
 # static_asserts them against the model's /*verilator public*/ parameters, so a mismatch
-# between this call and the C++ fails the build rather than the test.
+# between this call and the C++ fails the build rather than the test. NO_TRACE leaves out the
+# FST tracing code (the largest generated files): for whole-pipeline builds whose compile time
+# matters more than waveforms (sim::Harness then ignores SCW_FST_DIR for them).
 set(SCW_RTL_DIR "${CMAKE_CURRENT_LIST_DIR}/../rtl_models")
 
 function(scw_verilate target)
-  cmake_parse_arguments(ARG "" "TOP;PREFIX;STAGE" "PARAMS;FILES" ${ARGN})
+  cmake_parse_arguments(ARG "NO_TRACE" "TOP;PREFIX" "STAGE;PARAMS;FILES" ${ARGN})
   file(GLOB common_sv CONFIGURE_DEPENDS "${SCW_RTL_DIR}/common/*.sv")
   list(REMOVE_ITEM common_sv "${SCW_RTL_DIR}/common/scw_pkg.sv")
   set(sources "${SCW_RTL_DIR}/common/scw_pkg.sv" ${common_sv})
@@ -21,18 +24,24 @@ function(scw_verilate target)
       list(APPEND sources "${SCW_RTL_DIR}/${ARG_STAGE}/${f}")
     endforeach()
   elseif(ARG_STAGE)
-    file(GLOB stage_sv CONFIGURE_DEPENDS "${SCW_RTL_DIR}/${ARG_STAGE}/*.sv")
-    list(APPEND sources ${stage_sv})
+    foreach(dir IN LISTS ARG_STAGE)
+      file(GLOB stage_sv CONFIGURE_DEPENDS "${SCW_RTL_DIR}/${dir}/*.sv")
+      list(APPEND sources ${stage_sv})
+    endforeach()
   endif()
   set(gargs "")
   foreach(p IN LISTS ARG_PARAMS)
     list(APPEND gargs "-G${p}")
   endforeach()
+  set(trace TRACE_FST)
+  if(ARG_NO_TRACE)
+    set(trace "")
+  endif()
   verilate(${target}
     TOP_MODULE ${ARG_TOP}
     PREFIX ${ARG_PREFIX}
     SOURCES ${sources}
-    TRACE_FST
+    ${trace}
     VERILATOR_ARGS ${gargs} -O3 -Wno-fatal --x-assign fast --x-initial fast)
 endfunction()
 

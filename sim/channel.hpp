@@ -87,6 +87,10 @@ class Fifo : public ChannelBase {
     pending_push_ = true;
     pushed_ = v;
   }
+  /// Keeps a copy of every beat pushed from now on (a probe on the link, for pictures of a
+  /// stage's output); off by default.
+  void record(bool on) { recording_ = on; }
+  const std::vector<T>& recorded() const { return recorded_; }
   void pop() {
     if (!can_pop() || pending_pop_)
       throw std::logic_error("FIFO '" + name_ + "': pop of an empty FIFO (check can_pop)");
@@ -102,6 +106,7 @@ class Fifo : public ChannelBase {
     }
     if (pending_push_) {
       push_side_.note(*this, pushed_, cycle, &FrameStamp::first_push, &FrameStamp::last_push);
+      if (recording_) recorded_.push_back(pushed_);
       q_.push_back(pushed_);
       ++pushes_;
     }
@@ -114,6 +119,8 @@ class Fifo : public ChannelBase {
   T pushed_{};
   bool pending_push_ = false;
   bool pending_pop_ = false;
+  bool recording_ = false;
+  std::vector<T> recorded_;
   /// Frame tracking of one end (push or pop) of the FIFO.
   struct Side {
     int frame = -1;

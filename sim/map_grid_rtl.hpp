@@ -15,6 +15,22 @@
 
 namespace scw::sim {
 
+/// Drives a knot write port (scw_rectify_map_grid's, or a top's that passes it on): knot_we_i,
+/// knot_addr_i = {row, col}, knot_data_i = {y, x} as KnotBits-bit two's complement.
+template <typename Params, typename VM>
+void drive_knot_port(VM& m, const KnotWrite& w) {
+  constexpr int kb = Params::kKnotBits;
+  constexpr std::uint64_t mask = (std::uint64_t{1} << kb) - 1;
+  m.knot_we_i = w.we;
+  m.knot_addr_i =
+      static_cast<std::uint32_t>((static_cast<std::uint32_t>(w.row) << Params::kKnotColBits) |
+                                 static_cast<std::uint32_t>(w.col));
+  Bits d(2 * kb);
+  d.set(0, kb, static_cast<std::uint64_t>(static_cast<std::int64_t>(w.knot.x)) & mask);
+  d.set(kb, kb, static_cast<std::uint64_t>(static_cast<std::int64_t>(w.knot.y)) & mask);
+  d.to_port(m.knot_data_i);
+}
+
 /// `VM` is a Verilated scw_rectify_map_grid built with `Params` (map_grid_params_match).
 template <typename VM, typename Params>
 class MapGridRtl {
@@ -38,19 +54,7 @@ class MapGridRtl {
     o.in_ready = !o.out_valid || out_ready;  // the pipeline enable; a beat issues if run
     return o;
   }
-  void drive_knot(const KnotWrite& w) {
-    VM& m = h_->dut();
-    constexpr int kb = Params::kKnotBits;
-    constexpr std::uint64_t mask = (std::uint64_t{1} << kb) - 1;
-    m.knot_we_i = w.we;
-    m.knot_addr_i =
-        static_cast<std::uint32_t>((static_cast<std::uint32_t>(w.row) << Params::kKnotColBits) |
-                                   static_cast<std::uint32_t>(w.col));
-    Bits d(2 * kb);
-    d.set(0, kb, static_cast<std::uint64_t>(static_cast<std::int64_t>(w.knot.x)) & mask);
-    d.set(kb, kb, static_cast<std::uint64_t>(static_cast<std::int64_t>(w.knot.y)) & mask);
-    d.to_port(m.knot_data_i);
-  }
+  void drive_knot(const KnotWrite& w) { drive_knot_port<Params>(h_->dut(), w); }
   void tick() {
     h_->tick();
     h_->dut().knot_we_i = 0;

@@ -7,11 +7,22 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
 namespace scw::sim {
+
+namespace detail {
+/// Models Verilated without --trace (scw_verilate NO_TRACE) have no trace().
+template <typename VM, typename = void>
+struct has_trace : std::false_type {};
+template <typename VM>
+struct has_trace<VM, std::void_t<decltype(std::declval<VM&>().trace(
+                         static_cast<VerilatedFstC*>(nullptr), 0))>> : std::true_type {};
+}  // namespace detail
 
 /// Owns a VerilatedContext and one model `VM` with ports `clk_i` and `rst_ni`.
 /// Set the environment variable SCW_FST_DIR to a folder and every harness writes
@@ -21,13 +32,16 @@ class Harness {
  public:
   explicit Harness(const std::string& name) : ctx_(std::make_unique<VerilatedContext>()) {
     const char* dir = std::getenv("SCW_FST_DIR");
-    if (dir != nullptr && *dir != '\0') ctx_->traceEverOn(true);
+    const bool tracing = kTraced && dir != nullptr && *dir != '\0';
+    if (tracing) ctx_->traceEverOn(true);
     dut_ = std::make_unique<VM>(ctx_.get(), name.c_str());
-    if (dir != nullptr && *dir != '\0') {
-      std::filesystem::create_directories(dir);
-      trace_ = std::make_unique<VerilatedFstC>();
-      dut_->trace(trace_.get(), 99);
-      trace_->open((std::filesystem::path(dir) / (name + ".fst")).c_str());
+    if constexpr (kTraced) {
+      if (tracing) {
+        std::filesystem::create_directories(dir);
+        trace_ = std::make_unique<VerilatedFstC>();
+        dut_->trace(trace_.get(), 99);
+        trace_->open((std::filesystem::path(dir) / (name + ".fst")).c_str());
+      }
     }
     dut_->clk_i = 0;
     dut_->rst_ni = 1;
@@ -38,7 +52,9 @@ class Harness {
     // the last one evaluated on this thread, possibly another harness's, already destroyed
     // (a hang or worse). Point it at ours first.
     Verilated::threadContextp(ctx_.get());
-    if (trace_) trace_->close();
+    if constexpr (kTraced) {
+      if (trace_) trace_->close();
+    }
     dut_->final();
     dut_.reset();
   }
@@ -73,12 +89,16 @@ class Harness {
 
  private:
   void dump() {
-    if (trace_) trace_->dump(ctx_->time());
+    if constexpr (kTraced) {
+      if (trace_) trace_->dump(ctx_->time());
+    }
   }
 
   std::unique_ptr<VerilatedContext> ctx_;
   std::unique_ptr<VM> dut_;
-  std::unique_ptr<VerilatedFstC> trace_;
+  static constexpr bool kTraced = detail::has_trace<VM>::value;
+  // Untraced models link no FST writer, so they hold no pointer to one either.
+  std::conditional_t<kTraced, std::unique_ptr<VerilatedFstC>, std::unique_ptr<int>> trace_;
   std::uint64_t cycles_ = 0;
 };
 

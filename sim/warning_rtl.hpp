@@ -24,6 +24,25 @@ constexpr bool warning_params_match() {
          VM::Latency == hls::warning::kLatency;
 }
 
+/// Sets the cfg_* ports of the warning stage (scw_warning, or a top that passes them on).
+template <typename VM>
+void drive_warning_cfg(VM& m, const hls::warning::WarningConfig& cfg) {
+  m.cfg_baseline_q8_i = cfg.baseline_q8;
+  m.cfg_focal_q4_i = cfg.focal_q4;
+  m.cfg_cu_q4_i = cfg.cu_q4;
+  m.cfg_cv_q4_i = cfg.cv_q4;
+  m.cfg_veh_x_mm_i = static_cast<std::uint16_t>(cfg.veh_x_mm);
+  m.cfg_veh_y_mm_i = static_cast<std::uint16_t>(cfg.veh_y_mm);
+  m.cfg_veh_z_mm_i = static_cast<std::uint16_t>(cfg.veh_z_mm);
+  m.cfg_tunnel_half_w_mm_i = cfg.tunnel_half_w_mm;
+  m.cfg_tunnel_h_mm_i = cfg.tunnel_h_mm;
+  m.cfg_high_mm_i = cfg.high_mm;
+  m.cfg_medium_mm_i = cfg.medium_mm;
+  m.cfg_near_mm_i = cfg.near_mm;
+  m.cfg_min_height_mm_i = cfg.min_height_mm;
+  m.cfg_d_limit_q4_i = cfg.d_limit_q4;
+}
+
 /// A Verilated scw_warning as a cycle model, interchangeable with sim::WarningModel. RtlStream
 /// carries a packet's `last` inside *_data for the opaque elastic blocks; this stage has a
 /// separate in_last_i/out_last_o beside its payload ports (the labelling stage's output shape).
@@ -37,21 +56,7 @@ class WarningRtl {
   WarningRtl(const std::string& name, const hls::warning::WarningConfig& cfg)
       : h_(std::make_unique<Harness<VM>>(name)) {
     // Static inputs, set once before reset; Verilator keeps input values, so they stay stable.
-    VM& m = h_->dut();
-    m.cfg_baseline_q8_i = cfg.baseline_q8;
-    m.cfg_focal_q4_i = cfg.focal_q4;
-    m.cfg_cu_q4_i = cfg.cu_q4;
-    m.cfg_cv_q4_i = cfg.cv_q4;
-    m.cfg_veh_x_mm_i = static_cast<std::uint16_t>(cfg.veh_x_mm);
-    m.cfg_veh_y_mm_i = static_cast<std::uint16_t>(cfg.veh_y_mm);
-    m.cfg_veh_z_mm_i = static_cast<std::uint16_t>(cfg.veh_z_mm);
-    m.cfg_tunnel_half_w_mm_i = cfg.tunnel_half_w_mm;
-    m.cfg_tunnel_h_mm_i = cfg.tunnel_h_mm;
-    m.cfg_high_mm_i = cfg.high_mm;
-    m.cfg_medium_mm_i = cfg.medium_mm;
-    m.cfg_near_mm_i = cfg.near_mm;
-    m.cfg_min_height_mm_i = cfg.min_height_mm;
-    m.cfg_d_limit_q4_i = cfg.d_limit_q4;
+    drive_warning_cfg(h_->dut(), cfg);
     h_->reset();
   }
 

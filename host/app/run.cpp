@@ -46,8 +46,8 @@ TrackerParams tracker_params(const RunOptions& o) {
 
 }  // namespace
 
-Runner::Runner(const RunOptions& options, std::optional<RectifyMaps> maps)
-    : opt_(options), maps_(std::move(maps)), app_(std::make_unique<AppLayer>(options, tracker_params(options))) {
+Runner::Runner(const RunOptions& options, std::optional<RectifyMaps> maps, StageEngine engine)
+    : opt_(options), maps_(std::move(maps)), engine_(std::move(engine)), app_(std::make_unique<AppLayer>(options, tracker_params(options))) {
   opt_.warning.d_limit_px = opt_.max_disp;
   host::warning::to_fixed(opt_.warning);  // fail early, naming the value
 }
@@ -135,31 +135,51 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
                                 std::to_string(right_grey.cols) + " x " +
                                 std::to_string(right_grey.rows) + ")");
   FrameOutput out;
-  if (maps_) {
+  StageOutputs hw;
+  if (engine_) {
+    hw = engine_(left_grey, right_grey);
+    out.left = hw.left;
+    out.right = hw.right;
+    out.disparity = hw.disparity;
+  } else if (maps_) {
     out.left = rectify::rectify_image(left_grey, maps_->left, maps_->lead_rows);
     out.right = rectify::rectify_image(right_grey, maps_->right, maps_->lead_rows);
   } else {
     out.left = left_grey;
     out.right = right_grey;
   }
-  const auto dcfg = disparity::mode_config(opt_.mode, out.left.cols, out.left.rows, opt_.min_disp);
-  out.disparity =
-      disparity::disparity_image(out.left, out.right, opt_.window, opt_.min_disp, opt_.max_disp,
-                                 dcfg);
-  if (opt_.ground)
-    out.disparity = ground::remove_ground(
-        out.disparity,
-        ground::default_ground_config(opt_.warning.baseline_m, opt_.camera_height_m));
+  if (!engine_) {
+    const auto dcfg =
+        disparity::mode_config(opt_.mode, out.left.cols, out.left.rows, opt_.min_disp);
+    out.disparity = disparity::disparity_image(out.left, out.right, opt_.window, opt_.min_disp,
+                                               opt_.max_disp, dcfg);
+    if (opt_.ground)
+      out.disparity = ground::remove_ground(
+          out.disparity,
+          ground::default_ground_config(opt_.warning.baseline_m, opt_.camera_height_m));
+  }
   cv::Mat q4;
   out.disparity.convertTo(q4, CV_16UC1);  // negative (invalid) codes saturate to 0
-  const auto lcfg = labelling::grid_config(q4.cols, q4.rows, opt_.tiles_x, opt_.tiles_y, 0,
-                                           opt_.min_area);
+  const int invalid = static_cast<std::int16_t>(hls::disparity::invalid_code(
+      disparity::mode_config(opt_.mode, q4.cols, q4.rows, opt_.min_disp)));
+  const auto lcfg = labelling::grid_config(q4.cols, q4.rows, opt_.tiles_x, opt_.tiles_y,
+                                           invalid > 0 ? invalid : 0, opt_.min_area);
+  // With another engine the host's model labels that engine's map again: the label picture
+  // needs each pixel's node, which only the model keeps; the objects must be the engine's.
   out.segmentation = labelling::segment(q4, lcfg);
   const auto& seg = out.segmentation;
 
   auto wsetup = opt_.warning;
   const auto wcfg = host::warning::to_fixed(wsetup);
   out.result = warning::run_warning(warning::table_words(seg.objects, seg.status), wcfg);
+  if (engine_) {
+    if (hw.objects != seg.objects || !(hw.status == seg.status))
+      throw std::logic_error("the engine's object table differs from the C++ labelling model's "
+                             "on the engine's own disparity map");
+    if (hw.result != out.result)
+      throw std::logic_error("the engine's frame result differs from the C++ warning model's");
+    out.input_error = hw.input_error;
+  }
   out.deciding_label =
       out.result.index == 0xffff ? 0 : label_of(seg, out.result.index);
 
@@ -190,10 +210,8 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
   return out;
 }
 
-nlohmann::json frame_json(int frame, const FrameOutput& out) {
-  const auto& r = out.result;
+nlohmann::json result_json(const hls::warning::FrameResult& r) {
   nlohmann::json j;
-  j["frame"] = frame;
   j["severity"] = severity_name(r.severity);
   const bool any = r.index != 0xffff;
   j["distance_m"] = any ? nlohmann::json(r.distance_mm / 1000.0) : nlohmann::json(nullptr);
@@ -210,6 +228,13 @@ nlohmann::json frame_json(int frame, const FrameOutput& out) {
   if (r.object_overflow) flags.push_back("object_overflow");
   if (r.stream_error) flags.push_back("stream_error");
   j["flags"] = flags;
+  return j;
+}
+
+nlohmann::json frame_json(int frame, const FrameOutput& out) {
+  nlohmann::json j = {{"frame", frame}};
+  j.update(result_json(out.result));
+  if (out.input_error) j["flags"].push_back("input_error");
   j["label"] = out.deciding_label;
   if (out.deciding_label > 0) {
     const auto& o = out.objects[static_cast<std::size_t>(out.deciding_label - 1)];

@@ -3,6 +3,7 @@
 // warning through the stages' C++ models, then the application layer; what `scw run` drives.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -77,18 +78,34 @@ struct FrameOutput {
   cv::Mat disparity;    // CV_16S, Q11.4 (after ground removal when on)
   labelling::Segmentation segmentation;
   hls::warning::FrameResult result;  // the warning stage's word
+  bool input_error = false;          // the pipeline's input checks flagged this pair
   int deciding_label = 0;            // 0: none
   std::vector<ObjectReport> objects;  // by label
   std::vector<TargetReport> targets;
   cv::Mat overlay;                    // BGR, Fig. 5.11 b
 };
 
+/// What another engine's stages (the Verilated pipeline, sim/pipeline_chain.hpp) made of one
+/// pair: the rectified pair, the disparity map, the object table and the frame result.
+struct StageOutputs {
+  cv::Mat left, right;  // rectified grey
+  cv::Mat disparity;    // CV_16S, Q11.4
+  std::vector<hls::labelling::Object> objects;  // as the stage emitted them
+  hls::labelling::FrameStatus status;
+  hls::warning::FrameResult result;
+  bool input_error = false;  // either camera's frame broke the stream geometry
+};
+/// Runs rectify, disparity, labelling and warning on one raw (or rectified) pair.
+using StageEngine = std::function<StageOutputs(const cv::Mat& left, const cv::Mat& right)>;
+
 /// The chain, keeping the tracker's state from frame to frame.
 class Runner {
  public:
-  /// `maps` empty: the pairs are already rectified. Throws std::invalid_argument naming the
+  /// `maps` empty: the pairs are already rectified. `engine` empty: the stages' C++ models run
+  /// here; otherwise `engine` runs them and the C++ models check its every object and frame
+  /// result (std::logic_error on a difference). Throws std::invalid_argument naming the
   /// setting that a stage cannot take.
-  Runner(const RunOptions& options, std::optional<RectifyMaps> maps);
+  Runner(const RunOptions& options, std::optional<RectifyMaps> maps, StageEngine engine = {});
   ~Runner();
   FrameOutput process(const cv::Mat& left_grey, const cv::Mat& right_grey);
   const RunOptions& options() const { return opt_; }
@@ -98,12 +115,16 @@ class Runner {
   void classify_and_track(FrameOutput& out, const hls::warning::WarningConfig& wcfg);
   RunOptions opt_;
   std::optional<RectifyMaps> maps_;
+  StageEngine engine_;
   std::unique_ptr<AppLayer> app_;
 };
 
 /// The frame's line of results.jsonl: frame, severity, distance_m, closest_uv, disparity, bbox,
 /// objects, flags, and the deciding object's label, class and track.
 nlohmann::json frame_json(int frame, const FrameOutput& out);
+/// The warning stage's word alone: severity, distance_m, closest_uv, disparity, bbox,
+/// in_tunnel, objects, obstacles, flags.
+nlohmann::json result_json(const hls::warning::FrameResult& r);
 
 /// "none", "low", "medium", "high".
 const char* severity_name(hls::warning::Severity s);

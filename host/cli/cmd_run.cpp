@@ -16,6 +16,7 @@
 
 #include "host/app/run.hpp"
 #include "host/cli/commands.hpp"
+#include "host/pipeline/rtl_engine.hpp"
 #include "host/labelling/picture.hpp"
 #include "host/rectify/calibration.hpp"
 #include "host/rectify/fixed_map.hpp"
@@ -33,6 +34,7 @@ struct Options {
   double calib_unit_m = 1.0;
   std::string engine = "cpp";
   std::string mode = "opencv";
+  std::string tiles;
   app::RunOptions run;
 };
 
@@ -162,8 +164,19 @@ void write_frame(const fs::path& dir, const std::string& prefix, const app::Fram
 }
 
 void run(Options& o) {
-  if (o.engine != "cpp")
-    throw std::runtime_error("--engine " + o.engine + ": scw run drives the C++ models (cpp)");
+  if (o.engine == "rtl" && !o.rectified)
+    throw std::runtime_error("--engine rtl takes rectified pairs (--rectified): the Verilated "
+                             "rectifiers run an identity map here; raw pairs run with --engine cpp");
+  if (!o.tiles.empty()) {
+    const auto x = o.tiles.find('x');
+    try {
+      if (x == std::string::npos) throw std::invalid_argument("no x");
+      o.run.tiles_x = std::stoi(o.tiles.substr(0, x));
+      o.run.tiles_y = std::stoi(o.tiles.substr(x + 1));
+    } catch (const std::exception&) {
+      throw std::runtime_error("--tiles " + o.tiles + ": give columns x rows, e.g. 4x4");
+    }
+  }
   o.run.mode = o.mode == "thesis" ? disparity::Mode::thesis : disparity::Mode::opencv;
   std::vector<std::pair<fs::path, fs::path>> pairs;
   if (!o.sequence.empty()) {
@@ -183,7 +196,13 @@ void run(Options& o) {
             << o.run.warning.cu_px << ", " << o.run.warning.cv_px << "), window " << o.run.window
             << ", d " << o.run.min_disp << " .. " << o.run.max_disp << ", " << o.mode << " mode"
             << (o.run.ground ? ", ground removal" : "") << "\n";
-  app::Runner runner(o.run, std::move(maps));
+  app::StageEngine engine;
+  if (o.engine == "rtl") {
+    engine = host::pipeline::make_rtl_engine(o.run, first.cols, first.rows);
+    std::cerr << "run: the stages run as Verilated RTL; the C++ models check every object and "
+                 "frame result\n";
+  }
+  app::Runner runner(o.run, std::move(maps), std::move(engine));
 
   const fs::path dir(o.out_dir);
   fs::create_directories(dir);
@@ -235,8 +254,12 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--cy", o->cy, "With --rectified: principal point v, px (default: image centre)");
   cmd->add_option("--calib-unit-m", o->calib_unit_m,
                   "Metres per calibration unit (e.g. the chessboard square), default 1")->capture_default_str();
-  cmd->add_option("--engine", o->engine, "cpp: the stages' C++ models")->capture_default_str()
-      ->check(CLI::IsMember({"cpp"}));
+  cmd->add_option("--engine", o->engine,
+                  "cpp: the stages' C++ models; rtl: every block Verilated (rectified pairs, a "
+                  "built size: small up to 128 x 96, window 9, 16 disparities, 2x2 tiles)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cpp", "rtl"}));
+  cmd->add_option("--tiles", o->tiles, "Labelling tile grid, columns x rows (default 4x4)");
   cmd->add_option("--window", o->run.window, "SAD window N")->capture_default_str();
   cmd->add_option("--min-disp", o->run.min_disp, "Smallest candidate disparity")->capture_default_str();
   cmd->add_option("--max-disp", o->run.max_disp,

@@ -14,6 +14,8 @@ void add_disparity_command(CLI::App& app);
 void add_segment_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_train_command(CLI::App& app);
+void add_synth_command(CLI::App& app);  // `scw synth`
+void add_sim_command(CLI::App& app);    // `scw sim`
 /// `scw vectors rectify`, added under the `vectors` subcommand.
 void add_vectors_rectify_command(CLI::App& vectors);
 /// `scw vectors disparity`, added under the `vectors` subcommand.

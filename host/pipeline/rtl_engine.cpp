@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: Apache-2.0
+// The Verilated pipeline behind `scw run --engine rtl` (host/pipeline/rtl_engine.hpp).
+#include "host/pipeline/rtl_engine.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "host/pipeline/setup.hpp"
+#include "sim/builds/pipeline_small_rtl.hpp"
+#include "sim/pipeline_chain.hpp"
+#if SCW_THESIS_RTL
+#include "sim/builds/pipeline_thesis_rtl.hpp"
+#endif
+
+namespace scw::host::pipeline {
+namespace {
+
+template <typename Beat>
+cv::Mat picture(const std::vector<Beat>& beats, int width, int height, int type) {
+  cv::Mat m(height, width, type);
+  constexpr int P = Beat::kPixels;
+  std::size_t i = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; x += P, ++i)
+      for (int k = 0; k < P; ++k) {
+        if (type == CV_8U)
+          m.at<std::uint8_t>(y, x + k) = static_cast<std::uint8_t>(beats.at(i).px[k]);
+        else
+          m.at<std::int16_t>(y, x + k) = static_cast<std::int16_t>(beats.at(i).px[k]);
+      }
+  return m;
+}
+
+template <typename Build, typename Rtl>
+app::StageEngine engine_for(const app::RunOptions& o, int width, int height) {
+  StageOptions so;
+  so.mode = o.mode;
+  so.dmin = o.min_disp;
+  so.num_disp = o.max_disp - o.min_disp + 1;
+  so.tiles_x = o.tiles_x;
+  so.tiles_y = o.tiles_y;
+  so.min_area = o.min_area;
+  so.warning = o.warning;
+  const auto knots = identity_knots(width, height, Build::kGridLog2);
+  const auto setup =
+      make_setup(width, height, Build::kGridLog2, so, knots, knots, 1);
+  sim::check_setup<Build>(setup);
+  return [setup, width, height](const cv::Mat& l, const cv::Mat& r) {
+    constexpr int P = Build::kPpc;
+    sim::PipelineChain<Build, Rtl> chain(setup, sim::PipelineEngines::all(sim::Engine::rtl),
+                                         frames_beats<P>({l}),
+                                         frames_beats<P>({r}));
+    chain.rect_left().record(true);
+    chain.rect_right().record(true);
+    chain.disparity().record(true);
+    chain.objects().record(true);
+    chain.run(1, 64 * static_cast<std::int64_t>(width) * height + 1000000);
+    app::StageOutputs s;
+    s.left = picture(chain.rect_left().recorded(), width, height, CV_8U);
+    s.right = picture(chain.rect_right().recorded(), width, height, CV_8U);
+    s.disparity = picture(chain.disparity().recorded(), width, height, CV_16S);
+    for (const auto& w : chain.objects().recorded()) {
+      if (w.data.is_status) s.status = w.data.status;
+      else s.objects.push_back(w.data.object);
+    }
+    const auto& res = chain.results().front().data;
+    s.result = res.frame;
+    s.input_error = res.input_error_left || res.input_error_right;
+    return s;
+  };
+}
+
+/// The build's limits in words, for the error that lists them.
+template <typename Build>
+std::string describe(const char* name) {
+  return std::string(name) + ": up to " + std::to_string(Build::kMaxWidthPx) + " x " +
+         std::to_string(Build::kMaxHeight) + ", window " + std::to_string(Build::kWindow) +
+         ", up to " + std::to_string(Build::kNumDisp) + " disparities, up to " +
+         std::to_string(Build::kMaxTilesX) + " x " + std::to_string(Build::kMaxTilesY) + " tiles";
+}
+
+template <typename Build>
+bool takes(const app::RunOptions& o, int width, int height) {
+  return width <= Build::kMaxWidthPx && height <= Build::kMaxHeight &&
+         o.window == Build::kWindow && o.max_disp - o.min_disp + 1 <= Build::kNumDisp &&
+         o.tiles_x <= Build::kMaxTilesX && o.tiles_y <= Build::kMaxTilesY;
+}
+
+}  // namespace
+
+app::StageEngine make_rtl_engine(const app::RunOptions& o, int width, int height) {
+  if (o.ground)
+    throw std::invalid_argument("--engine rtl: the Verilated pipeline has no ground-removal "
+                                "stage; drop --ground or use --engine cpp");
+  using Small = hls::pipeline::SmallPipeline<1>;
+  if (takes<Small>(o, width, height))
+    return engine_for<Small, sim::small_build::Rtl<1>::type>(o, width, height);
+  using Thesis = hls::pipeline::ThesisPipeline<1>;
+#if SCW_THESIS_RTL
+  if (takes<Thesis>(o, width, height))
+    return engine_for<Thesis, sim::thesis_build::Rtl<1>::type>(o, width, height);
+  const std::string thesis = describe<Thesis>("thesis");
+#else
+  const std::string thesis =
+      describe<Thesis>("thesis") + " (not built into this scw: configure with -DSCW_THESIS_RTL=ON)";
+#endif
+  throw std::invalid_argument(
+      "--engine rtl: no Verilated build takes a " + std::to_string(width) + " x " +
+      std::to_string(height) + " frame with window " + std::to_string(o.window) +
+      ", disparities " + std::to_string(o.min_disp) + " .. " + std::to_string(o.max_disp) +
+      " and " + std::to_string(o.tiles_x) + " x " + std::to_string(o.tiles_y) +
+      " tiles. Builds: " + describe<Small>("small") + "; " + thesis +
+      ". Set --window, --min-disp/--max-disp and --tiles to one of them, or use --engine cpp.");
+}
+
+}  // namespace scw::host::pipeline

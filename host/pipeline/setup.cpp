@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: Apache-2.0
+// Pipeline run settings from user options (host/pipeline/setup.hpp).
+#include "host/pipeline/setup.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "host/labelling/run_model.hpp"
+
+namespace scw::host::pipeline {
+
+std::vector<hls::rectify::KnotPoint> identity_knots(int width, int height, int grid_log2) {
+  const int cols = rectify::knot_count(width, grid_log2);
+  const int rows = rectify::knot_count(height, grid_log2);
+  constexpr int kKnotFrac = 7;  // MapGridParams' default KnotFracBits (FracBits 5 + 2)
+  std::vector<hls::rectify::KnotPoint> k;
+  k.reserve(static_cast<std::size_t>(cols * rows));
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i)
+      k.push_back({(i << grid_log2) << kKnotFrac, (j << grid_log2) << kKnotFrac});
+  return k;
+}
+
+host::warning::WarningSetup warning_setup(int width, int height, const StageOptions& opt) {
+  auto w = opt.warning;
+  if (w.cu_px == 0.0 && w.cv_px == 0.0) {
+    w.cu_px = 0.5 * (width - 1);
+    w.cv_px = 0.5 * (height - 1);
+  }
+  w.d_limit_px = opt.dmin + opt.num_disp - 1;
+  return w;
+}
+
+sim::PipelineSetup make_setup(int width, int height, int grid_log2, const StageOptions& opt,
+                              std::vector<hls::rectify::KnotPoint> left_knots,
+                              std::vector<hls::rectify::KnotPoint> right_knots, int lead_rows) {
+  if (opt.num_disp < 1)
+    throw std::invalid_argument("num_disp " + std::to_string(opt.num_disp) + ": need at least 1");
+  sim::PipelineSetup s;
+  s.width = width;
+  s.height = height;
+  s.lead_rows = lead_rows;
+  s.disparity = disparity::mode_config(opt.mode, width, height, opt.dmin);
+  s.disparity.num_disp = opt.num_disp;
+  const int invalid = static_cast<std::int16_t>(hls::disparity::invalid_code(s.disparity));
+  s.labelling = labelling::grid_config(width, height, opt.tiles_x, opt.tiles_y,
+                                       invalid > 0 ? invalid : 0, opt.min_area);
+  s.warning = host::warning::to_fixed(warning_setup(width, height, opt));
+  s.knot_cols = rectify::knot_count(width, grid_log2);
+  s.knot_rows = rectify::knot_count(height, grid_log2);
+  s.left_knots = std::move(left_knots);
+  s.right_knots = std::move(right_knots);
+  return s;
+}
+
+}  // namespace scw::host::pipeline

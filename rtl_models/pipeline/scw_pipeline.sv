@@ -1,0 +1,280 @@
+// SPDX-License-Identifier: Apache-2.0
+// The whole collision-warning pipeline: two camera branches (frame check, map-grid expander,
+// rectifier), disparity, labelling and warning, every link an scw_fifo.
+`default_nettype none
+
+//  left raw  -> [camera L] --rect--> scw_disparity -> FIFO -> (Ppc > 1: scw_beat_split -> FIFO)
+//  right raw -> [camera R] --rect-->                 -> scw_labelling -> FIFO -> scw_warning
+//                  |flag                                 -> FIFO -> scw_result_merge -> FIFO -> out
+//                  +--------------------------------------------------^
+// The C++ chain sim/pipeline_chain.hpp builds the same graph from the stages' models (or their
+// Verilated twins) and sim::Fifo, the twin of scw_fifo, so the two agree clock for clock
+// (tests/pipeline). Parameters: hls::pipeline::PipelineParams, the one list of built sizes.
+// The labelling stage takes one pixel per clock, so for Ppc > 1 the disparity beats are split.
+module scw_pipeline #(
+  parameter int unsigned Ppc            /*verilator public*/ = 1,
+  parameter int unsigned MaxWidthPx     /*verilator public*/ = 64,
+  parameter int unsigned MaxHeight      /*verilator public*/ = 48,
+  parameter int unsigned RectRows       /*verilator public*/ = 16,
+  parameter int unsigned GridLog2       /*verilator public*/ = 3,
+  parameter int unsigned Window         /*verilator public*/ = 5,
+  parameter int unsigned NumDisp        /*verilator public*/ = 16,
+  parameter int unsigned MaxTilesX      /*verilator public*/ = 2,
+  parameter int unsigned MaxTilesY      /*verilator public*/ = 2,
+  parameter int unsigned LabelsPerTile  /*verilator public*/ = 64,
+  parameter int unsigned MaxObjects     /*verilator public*/ = 32,
+  parameter int unsigned MaxDisparityPx /*verilator public*/ = 32,
+  parameter int unsigned RawFifoDepth   /*verilator public*/ = 2,
+  parameter int unsigned MapFifoDepth   /*verilator public*/ = 4,
+  parameter int unsigned RectFifoDepth  /*verilator public*/ = 4,
+  parameter int unsigned DispFifoDepth  /*verilator public*/ = 4,
+  parameter int unsigned ObjFifoDepth   /*verilator public*/ = 2,
+  parameter int unsigned ResFifoDepth   /*verilator public*/ = 2,
+  parameter int unsigned FlagFifoDepth  /*verilator public*/ = 4,
+  localparam int unsigned MaxWH    = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight,
+  localparam int unsigned KBits    = $clog2(MaxWH) + 2 + 7,
+  localparam int unsigned KCols    = ((MaxWidthPx - 1) >> GridLog2) + 2,
+  localparam int unsigned KRows    = ((MaxHeight - 1) >> GridLog2) + 2,
+  localparam int unsigned KAddrW   = $clog2(KRows) + $clog2(KCols),
+  localparam int unsigned KnotW    = 2 * KBits,
+  localparam int unsigned BeatW    = Ppc * 8,
+  localparam int unsigned DispW    = Ppc * 16,
+  localparam int unsigned WW       = $clog2(MaxWidthPx + 1),
+  localparam int unsigned HW       = $clog2(MaxHeight + 1),
+  localparam int unsigned NumW     = $clog2(NumDisp + 1),
+  localparam int unsigned SlotW    = $clog2(RectRows),
+  localparam int unsigned ObjW     = 1 + 32 + 10 * 16 + 9 * 64,  // sim/labelling_pack.hpp
+  localparam int unsigned ResW     = 2 + 5 + 3 * 16 + 32 + 7 * 16,  // sim/warning_pack.hpp
+  localparam int unsigned OutW     = ResW + 2                        // sim/pipeline_pack.hpp
+) (
+  input  logic               clk_i,
+  input  logic               rst_ni,
+  // frame and rectification
+  input  logic [WW-1:0]      cfg_width_i,
+  input  logic [HW-1:0]      cfg_height_i,
+  input  logic [SlotW-1:0]   cfg_lead_i,
+  // disparity (hls::disparity::DisparityConfig)
+  input  logic [WW-1:0]      cfg_dmin_i,
+  input  logic [NumW-1:0]    cfg_num_disp_i,
+  input  logic               cfg_prefilter_i,
+  input  logic [5:0]         cfg_cap_i,
+  input  logic [31:0]        cfg_sad_limit_i,
+  input  logic [31:0]        cfg_texture_i,
+  input  logic [7:0]         cfg_uniqueness_i,
+  input  logic               cfg_subpixel_i,
+  input  logic               cfg_opencv_invalid_i,
+  // labelling (hls::labelling::LabellingConfig; width and height are the frame's)
+  input  logic [15:0]        cfg_tile_w_i,
+  input  logic [15:0]        cfg_tile_h_i,
+  input  logic [15:0]        cfg_floor_i,
+  input  logic [31:0]        cfg_min_area_i,
+  // warning (hls::warning::WarningConfig)
+  input  logic [19:0]        cfg_baseline_q8_i,
+  input  logic [15:0]        cfg_focal_q4_i,
+  input  logic [15:0]        cfg_cu_q4_i,
+  input  logic [15:0]        cfg_cv_q4_i,
+  input  logic signed [15:0] cfg_veh_x_mm_i,
+  input  logic signed [15:0] cfg_veh_y_mm_i,
+  input  logic signed [15:0] cfg_veh_z_mm_i,
+  input  logic [15:0]        cfg_tunnel_half_w_mm_i,
+  input  logic [15:0]        cfg_tunnel_h_mm_i,
+  input  logic [15:0]        cfg_high_mm_i,
+  input  logic [15:0]        cfg_medium_mm_i,
+  input  logic [15:0]        cfg_near_mm_i,
+  input  logic [15:0]        cfg_min_height_mm_i,
+  input  logic [15:0]        cfg_d_limit_q4_i,
+  // map knots, written while run_i is low; knot_right_i picks the camera
+  input  logic               run_i,
+  input  logic               knot_we_i,
+  input  logic               knot_right_i,
+  input  logic [KAddrW-1:0]  knot_addr_i,
+  input  logic [KnotW-1:0]   knot_data_i,
+  // raw pixel streams
+  input  logic               l_valid_i,
+  output logic               l_ready_o,
+  input  logic [BeatW-1:0]   l_data_i,
+  input  logic               l_sof_i,
+  input  logic               l_eol_i,
+  input  logic               r_valid_i,
+  output logic               r_ready_o,
+  input  logic [BeatW-1:0]   r_data_i,
+  input  logic               r_sof_i,
+  input  logic               r_eol_i,
+  // one result word per frame
+  output logic               out_valid_o,
+  input  logic               out_ready_i,
+  output logic [OutW-1:0]    out_data_o,
+  output logic               out_last_o,
+  // sticky: {labelling, disparity, rectify R [2:0], rectify L [2:0]}
+  output logic [7:0]         err_o
+);
+  // The links' fill levels (scw_fifo count_o) are for debug probes; nothing here reads them.
+  /* verilator lint_off PINCONNECTEMPTY */
+  logic             cl_valid, cl_ready, cl_sof, cl_eol, cr_valid, cr_ready, cr_sof, cr_eol;
+  logic [BeatW-1:0] cl_data, cr_data;
+  logic             fl_valid, fl_ready, fl_error, fr_valid, fr_ready, fr_error;
+  logic [2:0]       err_l, err_r;
+  logic             err_disp, err_lab;
+
+  scw_pipeline_camera #(
+    .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .RectRows(RectRows),
+    .GridLog2(GridLog2), .RawFifoDepth(RawFifoDepth), .MapFifoDepth(MapFifoDepth),
+    .RectFifoDepth(RectFifoDepth), .FlagFifoDepth(FlagFifoDepth)
+  ) u_cam_l (
+    .clk_i, .rst_ni, .cfg_width_i, .cfg_height_i, .cfg_lead_i, .run_i,
+    .knot_we_i(knot_we_i && !knot_right_i), .knot_addr_i, .knot_data_i,
+    .in_valid_i(l_valid_i), .in_ready_o(l_ready_o), .in_data_i(l_data_i),
+    .in_sof_i(l_sof_i), .in_eol_i(l_eol_i),
+    .out_valid_o(cl_valid), .out_ready_i(cl_ready), .out_data_o(cl_data),
+    .out_sof_o(cl_sof), .out_eol_o(cl_eol),
+    .flag_valid_o(fl_valid), .flag_ready_i(fl_ready), .flag_error_o(fl_error),
+    .err_o(err_l)
+  );
+
+  scw_pipeline_camera #(
+    .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .RectRows(RectRows),
+    .GridLog2(GridLog2), .RawFifoDepth(RawFifoDepth), .MapFifoDepth(MapFifoDepth),
+    .RectFifoDepth(RectFifoDepth), .FlagFifoDepth(FlagFifoDepth)
+  ) u_cam_r (
+    .clk_i, .rst_ni, .cfg_width_i, .cfg_height_i, .cfg_lead_i, .run_i,
+    .knot_we_i(knot_we_i && knot_right_i), .knot_addr_i, .knot_data_i,
+    .in_valid_i(r_valid_i), .in_ready_o(r_ready_o), .in_data_i(r_data_i),
+    .in_sof_i(r_sof_i), .in_eol_i(r_eol_i),
+    .out_valid_o(cr_valid), .out_ready_i(cr_ready), .out_data_o(cr_data),
+    .out_sof_o(cr_sof), .out_eol_o(cr_eol),
+    .flag_valid_o(fr_valid), .flag_ready_i(fr_ready), .flag_error_o(fr_error),
+    .err_o(err_r)
+  );
+
+  // disparity -> FIFO
+  logic             d_valid, d_ready, d_sof, d_eol, dq_valid, dq_ready;
+  logic [DispW-1:0] d_data;
+  logic [DispW+1:0] dq_word;
+
+  scw_disparity #(
+    .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Window(Window),
+    .NumDisp(NumDisp)
+  ) u_disparity (
+    .clk_i, .rst_ni, .cfg_width_i, .cfg_height_i, .cfg_dmin_i, .cfg_num_disp_i,
+    .cfg_prefilter_i, .cfg_cap_i, .cfg_sad_limit_i, .cfg_texture_i, .cfg_uniqueness_i,
+    .cfg_subpixel_i, .cfg_opencv_invalid_i,
+    .l_valid_i(cl_valid), .l_ready_o(cl_ready), .l_data_i(cl_data), .l_sof_i(cl_sof),
+    .l_eol_i(cl_eol),
+    .r_valid_i(cr_valid), .r_ready_o(cr_ready), .r_data_i(cr_data), .r_sof_i(cr_sof),
+    .r_eol_i(cr_eol),
+    .out_valid_o(d_valid), .out_ready_i(d_ready), .out_data_o(d_data), .out_sof_o(d_sof),
+    .out_eol_o(d_eol), .err_o(err_disp)
+  );
+
+  scw_fifo #(.Width(DispW + 2), .Depth(DispFifoDepth)) u_disp_fifo (
+    .clk_i, .rst_ni,
+    .in_valid_i(d_valid), .in_ready_o(d_ready), .in_data_i({d_eol, d_sof, d_data}),
+    .out_valid_o(dq_valid), .out_ready_i(dq_ready), .out_data_o(dq_word),
+    .count_o()
+  );
+
+  // one disparity per beat into labelling
+  logic        s_valid, s_ready, s_sof, s_eol;
+  logic [15:0] s_data;
+
+  if (Ppc > 1) begin : gen_split
+    logic        b_valid, b_ready, b_sof, b_eol;
+    logic [15:0] b_data;
+    logic [17:0] sq_word;
+
+    scw_beat_split #(.Ppc(Ppc), .PixW(16)) u_split (
+      .clk_i, .rst_ni,
+      .in_valid_i(dq_valid), .in_ready_o(dq_ready), .in_data_i(dq_word[DispW-1:0]),
+      .in_sof_i(dq_word[DispW]), .in_eol_i(dq_word[DispW+1]),
+      .out_valid_o(b_valid), .out_ready_i(b_ready), .out_data_o(b_data), .out_sof_o(b_sof),
+      .out_eol_o(b_eol)
+    );
+    scw_fifo #(.Width(18), .Depth(DispFifoDepth)) u_split_fifo (
+      .clk_i, .rst_ni,
+      .in_valid_i(b_valid), .in_ready_o(b_ready), .in_data_i({b_eol, b_sof, b_data}),
+      .out_valid_o(s_valid), .out_ready_i(s_ready), .out_data_o(sq_word),
+      .count_o()
+    );
+    assign s_data = sq_word[15:0];
+    assign s_sof  = sq_word[16];
+    assign s_eol  = sq_word[17];
+  end else begin : gen_no_split
+    assign s_valid  = dq_valid;
+    assign dq_ready = s_ready;
+    assign s_data   = dq_word[15:0];
+    assign s_sof    = dq_word[16];
+    assign s_eol    = dq_word[17];
+  end
+
+  // labelling -> FIFO -> warning -> FIFO
+  logic            o_valid, o_ready, o_last, oq_valid, oq_ready;
+  logic [ObjW-1:0] o_data;
+  logic [ObjW:0]   oq_word;
+  logic            w_valid, w_ready, w_last, wq_valid, wq_ready;
+  logic [ResW-1:0] w_data;
+  logic [ResW:0]   wq_word;
+
+  scw_labelling #(
+    .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .MaxTilesX(MaxTilesX),
+    .MaxTilesY(MaxTilesY), .LabelsPerTile(LabelsPerTile), .MaxObjects(MaxObjects)
+  ) u_labelling (
+    .clk_i, .rst_ni,
+    .cfg_width_i(16'(cfg_width_i)), .cfg_height_i(16'(cfg_height_i)),
+    .cfg_tile_w_i, .cfg_tile_h_i, .cfg_floor_i, .cfg_min_area_i,
+    .in_valid_i(s_valid), .in_ready_o(s_ready), .in_data_i(s_data), .in_sof_i(s_sof),
+    .in_eol_i(s_eol),
+    .out_valid_o(o_valid), .out_ready_i(o_ready), .out_data_o(o_data), .out_last_o(o_last),
+    .err_o(err_lab)
+  );
+
+  scw_fifo #(.Width(ObjW + 1), .Depth(ObjFifoDepth)) u_obj_fifo (
+    .clk_i, .rst_ni,
+    .in_valid_i(o_valid), .in_ready_o(o_ready), .in_data_i({o_last, o_data}),
+    .out_valid_o(oq_valid), .out_ready_i(oq_ready), .out_data_o(oq_word),
+    .count_o()
+  );
+
+  scw_warning #(.MaxDisparityPx(MaxDisparityPx)) u_warning (
+    .clk_i, .rst_ni,
+    .cfg_baseline_q8_i, .cfg_focal_q4_i, .cfg_cu_q4_i, .cfg_cv_q4_i, .cfg_veh_x_mm_i,
+    .cfg_veh_y_mm_i, .cfg_veh_z_mm_i, .cfg_tunnel_half_w_mm_i, .cfg_tunnel_h_mm_i,
+    .cfg_high_mm_i, .cfg_medium_mm_i, .cfg_near_mm_i, .cfg_min_height_mm_i,
+    .cfg_d_limit_q4_i,
+    .in_valid_i(oq_valid), .in_ready_o(oq_ready), .in_data_i(oq_word[ObjW-1:0]),
+    .in_last_i(oq_word[ObjW]),
+    .out_valid_o(w_valid), .out_ready_i(w_ready), .out_data_o(w_data), .out_last_o(w_last)
+  );
+
+  scw_fifo #(.Width(ResW + 1), .Depth(ResFifoDepth)) u_res_fifo (
+    .clk_i, .rst_ni,
+    .in_valid_i(w_valid), .in_ready_o(w_ready), .in_data_i({w_last, w_data}),
+    .out_valid_o(wq_valid), .out_ready_i(wq_ready), .out_data_o(wq_word),
+    .count_o()
+  );
+
+  // result word: warning result + the input checks' flags -> FIFO -> out
+  logic            m_valid, m_ready, m_last;
+  logic [OutW-1:0] m_data;
+  logic [OutW:0]   out_word;
+
+  scw_result_merge #(.ResW(ResW)) u_merge (
+    .clk_i, .rst_ni,
+    .res_valid_i(wq_valid), .res_ready_o(wq_ready), .res_data_i(wq_word[ResW-1:0]),
+    .res_last_i(wq_word[ResW]),
+    .left_valid_i(fl_valid), .left_ready_o(fl_ready), .left_error_i(fl_error),
+    .right_valid_i(fr_valid), .right_ready_o(fr_ready), .right_error_i(fr_error),
+    .out_valid_o(m_valid), .out_ready_i(m_ready), .out_data_o(m_data), .out_last_o(m_last)
+  );
+
+  scw_fifo #(.Width(OutW + 1), .Depth(ResFifoDepth)) u_out_fifo (
+    .clk_i, .rst_ni,
+    .in_valid_i(m_valid), .in_ready_o(m_ready), .in_data_i({m_last, m_data}),
+    .out_valid_o(out_valid_o), .out_ready_i(out_ready_i), .out_data_o(out_word),
+    .count_o()
+  );
+  assign out_data_o = out_word[OutW-1:0];
+  assign out_last_o = out_word[OutW];
+
+  assign err_o = {err_lab, err_disp, err_r, err_l};
+  /* verilator lint_on PINCONNECTEMPTY */
+endmodule

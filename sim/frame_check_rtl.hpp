@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: Apache-2.0
+// The Verilated scw_frame_check with the C++ model's interface, and its parameter check.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "hls/pipeline/frame_check.hpp"
+#include "sim/frame_check_model.hpp"
+#include "sim/pack.hpp"
+#include "sim/verilated_harness.hpp"
+
+namespace scw::sim {
+
+/// `VM` is a Verilated scw_frame_check module class (its /*verilator public*/ parameters are
+/// static constexpr members); `Params` an hls::pipeline::FrameCheckParams. The latency is the
+/// model's too: it sets the block's timing.
+template <typename VM, typename Params>
+constexpr bool frame_check_params_match() {
+  return VM::Ppc == Params::kPpc && VM::MaxWidthPx == Params::kMaxWidthPx &&
+         VM::MaxHeight == Params::kMaxHeight && VM::Latency == Params::kLatency;
+}
+
+/// A Verilated scw_frame_check built with `Params` (check with frame_check_params_match) as a
+/// cycle model of FrameCheckModel's shape, so a test or a FrameCheckComponent drives either.
+template <typename VM, typename Params>
+class FrameCheckRtl {
+ public:
+  using params = Params;
+  using in_type = typename Params::beat_type;
+  using out_type = in_type;
+  using flag_type = hls::pipeline::FrameFlagPacket;
+
+  /// Checks `cfg` as the model does (std::invalid_argument) and drives cfg_* before reset;
+  /// Verilator keeps input values, so they stay stable throughout.
+  FrameCheckRtl(const std::string& name, const hls::pipeline::FrameCheckConfig& cfg)
+      : h_(std::make_unique<Harness<VM>>(name)) {
+    hls::pipeline::check_frame_check_config<Params>(cfg);
+    VM& m = h_->dut();
+    m.cfg_width_i = static_cast<unsigned>(cfg.width);
+    m.cfg_height_i = static_cast<unsigned>(cfg.height);
+    h_->reset();
+  }
+
+  FrameCheckOutputs<out_type> eval(bool in_valid, const in_type& in, bool out_ready,
+                                   bool flag_ready) {
+    using L = BeatLayout<in_type>;
+    VM& m = h_->dut();
+    m.in_valid_i = in_valid;
+    L::payload(in).to_port(m.in_data_i);
+    m.in_sof_i = in.sof;
+    m.in_eol_i = in.eol;
+    m.out_ready_i = out_ready;
+    m.flag_ready_i = flag_ready;
+    m.eval();
+    FrameCheckOutputs<out_type> o;
+    o.in_ready = m.in_ready_o != 0;
+    o.out_valid = m.out_valid_o != 0;
+    if (o.out_valid)
+      o.out = L::from_payload(Bits::from_port(m.out_data_o, L::kPayloadBits), m.out_sof_o != 0,
+                              m.out_eol_o != 0);
+    o.flag_valid = m.flag_valid_o != 0;
+    if (o.flag_valid) o.flag.error = m.flag_error_o != 0;
+    return o;
+  }
+  void tick() { h_->tick(); }
+
+  Harness<VM>& harness() { return *h_; }
+  VM& dut() { return h_->dut(); }
+
+ private:
+  std::unique_ptr<Harness<VM>> h_;
+};
+
+}  // namespace scw::sim

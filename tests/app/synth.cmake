@@ -1,0 +1,14 @@
+# SPDX-License-Identifier: Apache-2.0
+# `scw synth`: two small stages through Yosys with the JSON checked field by field, and an
+# unknown build refused with a message naming the builds. The checks are CMake scripts
+# (synth_check.cmake) so the tests need nothing beyond cmake, bash and Yosys.
+add_test(NAME "app:cli synth at the small build writes a JSON entry per module"
+         COMMAND ${CMAKE_COMMAND} -DSCW=$<TARGET_FILE:scw> -DMODE=small
+                 -DWORK=${CMAKE_CURRENT_BINARY_DIR}/cli_synth
+                 -P ${CMAKE_CURRENT_LIST_DIR}/synth_check.cmake)
+set_tests_properties("app:cli synth at the small build writes a JSON entry per module"
+                     PROPERTIES LABELS "yosys" TIMEOUT 300)
+add_test(NAME "app:cli synth refuses an unknown config and names the configs"
+         COMMAND ${CMAKE_COMMAND} -DSCW=$<TARGET_FILE:scw> -DMODE=unknown_config
+                 -DWORK=${CMAKE_CURRENT_BINARY_DIR}/cli_synth_bad
+                 -P ${CMAKE_CURRENT_LIST_DIR}/synth_check.cmake)

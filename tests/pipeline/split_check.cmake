@@ -1,0 +1,18 @@
+# SPDX-License-Identifier: Apache-2.0
+# [rtl] scw_beat_split and scw_frame_check against their C++ cycle models clock for clock, at the
+# builds that pipeline/split_check_configs.hpp declares (and static_asserts) once.
+scw_rtl_model_library(scw_test_rtl_split_check)
+foreach(p 1 2 4)
+  scw_verilate(scw_test_rtl_split_check TOP scw_beat_split PREFIX Vbeat_split_p${p}
+               STAGE pipeline FILES scw_beat_split.sv PARAMS Ppc=${p} PixW=16)
+endforeach()
+foreach(p 1 2)
+  scw_verilate(scw_test_rtl_split_check TOP scw_frame_check PREFIX Vframe_check_p${p}
+               STAGE pipeline FILES scw_frame_check.sv PARAMS Ppc=${p} MaxWidthPx=16 MaxHeight=8)
+endforeach()
+add_executable(test_pipeline_split_check pipeline/test_beat_split_rtl.cpp
+               pipeline/test_frame_check_rtl.cpp)
+target_link_libraries(test_pipeline_split_check PRIVATE scw_test_main scw::sim
+                      scw_test_rtl_split_check)
+scw_warnings(test_pipeline_split_check)
+catch_discover_tests(test_pipeline_split_check TEST_PREFIX "pipeline:")

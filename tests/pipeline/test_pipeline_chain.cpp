@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: Apache-2.0
+// [pipeline] The whole pipeline at the small build: the C++ chain, the chain of Verilated blocks
+// and the Verilated scw_pipeline top agree clock for clock; results survive random gaps and
+// backpressure; broken frames are flagged and the next frame is right; on a Tsukuba crop the
+// frame results equal the floating-point chain's (cv::StereoBM, flood fill, Eigen).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "sim/builds/pipeline_small_rtl.hpp"
+#include "hls/pipeline/pipeline_params.hpp"
+#include "host/disparity/run_model.hpp"
+#include "host/pipeline/reference_chain.hpp"
+#include "host/pipeline/setup.hpp"
+#include "sim/pipeline_chain.hpp"
+#include "sim/pipeline_top.hpp"
+
+namespace {
+
+using scw::sim::Engine;
+using scw::sim::PipelineEngines;
+using Result = scw::hls::pipeline::PipelineResultPacket;
+
+template <int P>
+using Build = scw::sim::small_build::Build<P>;
+template <int P>
+using Rtl = scw::sim::small_build::Rtl<P>;
+
+template <int P>
+using Chain = scw::sim::small_build::Chain<P>;
+
+/// A synthetic raw pair: a textured background at disparity 3 and a textured box at 11
+/// (nearer), the right image shifted by the disparities and by half a pixel down, so that the
+/// right camera's map (knots half a pixel up) has work to do.
+struct Scene {
+  cv::Mat left, right;
+};
+
+Scene make_scene(int w, int h, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> tex(0, 255);
+  cv::Mat bg(h + 2, w + 32, CV_8U), box(h + 2, w + 32, CV_8U);
+  for (int y = 0; y < bg.rows; ++y)
+    for (int x = 0; x < bg.cols; ++x) {
+      bg.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(tex(rng));
+      box.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(tex(rng));
+    }
+  cv::GaussianBlur(bg, bg, cv::Size(3, 3), 0.8);
+  cv::GaussianBlur(box, box, cv::Size(3, 3), 0.8);
+  Scene s{cv::Mat(h, w, CV_8U), cv::Mat(h, w, CV_8U)};
+  const int bx0 = w / 3, bx1 = w / 3 + w / 4, by0 = h / 4, by1 = h / 4 + h / 2;
+  const auto px = [&](int x, int y, bool right_cam) {
+    const bool in_box = x >= bx0 && x < bx1 && y >= by0 && y < by1;
+    const int d = in_box ? 11 : 3;
+    const int sx = x + (right_cam ? d : 0) + 16;  // the right camera sees x - d at x
+    return in_box ? box.at<std::uint8_t>(y + 1, sx) : bg.at<std::uint8_t>(y + 1, sx);
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      s.left.at<std::uint8_t>(y, x) = px(x, y, false);
+      // scene point (x + d) of the left image appears at x in the right one
+      s.right.at<std::uint8_t>(y, x) = px(x - 0, y, true);
+    }
+  return s;
+}
+
+/// The settings of the small build's runs: opencv mode, disparities 0 .. 15, 2 x 2 tiles,
+/// objects of 20 px, a camera of f 100 px and b 0.2 m.
+scw::host::pipeline::StageOptions small_options() {
+  scw::host::pipeline::StageOptions o;
+  o.mode = scw::disparity::Mode::opencv;
+  o.dmin = 0;
+  o.num_disp = 16;
+  o.tiles_x = 2;
+  o.tiles_y = 2;
+  o.min_area = 20;
+  o.warning.focal_px = 100.0;
+  o.warning.baseline_m = 0.2;
+  return o;
+}
+
+scw::sim::PipelineSetup small_setup(int w, int h, bool shifted_right) {
+  auto left = scw::host::pipeline::identity_knots(w, h, Build<1>::kGridLog2);
+  auto right = left;
+  if (shifted_right)
+    for (auto& k : right) k.y -= 64;  // half a pixel up: Q.7
+  return scw::host::pipeline::make_setup(w, h, Build<1>::kGridLog2, small_options(),
+                                         std::move(left), std::move(right), 2);
+}
+
+template <int P>
+std::vector<std::int64_t> result_cycles(const Chain<P>& c) {
+  std::vector<std::int64_t> v;
+  for (const auto& f : const_cast<Chain<P>&>(c).result_fifo().frames())
+    if (f.first_pop >= 0) v.push_back(f.first_pop - c.start_cycle());
+  return v;
+}
+
+template <int P>
+void check_three_ways(int frames) {
+  const int w = 64, h = 32;
+  std::vector<cv::Mat> ls, rs;
+  for (int k = 0; k < frames; ++k) {
+    const Scene s = make_scene(w, h, 11u + static_cast<std::uint32_t>(k));
+    ls.push_back(s.left);
+    rs.push_back(s.right);
+  }
+  const auto left = scw::host::pipeline::frames_beats<P>(ls);
+  const auto right = scw::host::pipeline::frames_beats<P>(rs);
+  const auto setup = small_setup(w, h, true);
+
+  Chain<P> cpp(setup, PipelineEngines::all(Engine::cpp), left, right);
+  cpp.run(static_cast<std::size_t>(frames), 200000);
+  Chain<P> rtl(setup, scw::sim::small_build::rtl_engines<P>(), left, right);
+  rtl.run(static_cast<std::size_t>(frames), 200000);
+  scw::sim::small_build::Top<P> top(setup);
+  const auto t = top.run(left, right, static_cast<std::size_t>(frames), 200000);
+
+  REQUIRE(cpp.results().size() == static_cast<std::size_t>(frames));
+  CHECK(rtl.results() == cpp.results());
+  CHECK(t.results == cpp.results());
+  CHECK(result_cycles<P>(rtl) == result_cycles<P>(cpp));
+  CHECK(t.result_cycles == result_cycles<P>(cpp));
+  CHECK(top.errors() == 0u);
+  // Every link moved the same beats at the same cycles, C++ and RTL.
+  const auto a = cpp.report(), b = rtl.report();
+  REQUIRE(a.fifos.size() == b.fifos.size());
+  for (std::size_t i = 0; i < a.fifos.size(); ++i) {
+    INFO(a.fifos[i].name);
+    CHECK(a.fifos[i].beats == b.fifos[i].beats);
+    CHECK(a.fifos[i].max_occupancy == b.fifos[i].max_occupancy);
+  }
+  REQUIRE(a.stages.size() == b.stages.size());
+  for (std::size_t i = 0; i < a.stages.size(); ++i) {
+    INFO(a.stages[i].name);
+    REQUIRE(a.stages[i].frames.size() == b.stages[i].frames.size());
+    for (std::size_t k = 0; k < a.stages[i].frames.size(); ++k) {
+      CHECK(a.stages[i].frames[k].first_in == b.stages[i].frames[k].first_in);
+      CHECK(a.stages[i].frames[k].last_out == b.stages[i].frames[k].last_out);
+    }
+  }
+  // The box is found, in every frame, and no flag is raised.
+  for (const Result& r : cpp.results()) {
+    CHECK(r.data.frame.objects >= 1);
+    CHECK_FALSE(r.data.input_error_left);
+    CHECK_FALSE(r.data.input_error_right);
+    CHECK_FALSE(r.data.frame.stream_error);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("C++ chain, RTL chain and the scw_pipeline top agree clock for clock, P = 1",
+          "[pipeline][rtl]") {
+  check_three_ways<1>(3);
+}
+
+TEST_CASE("C++ chain, RTL chain and the scw_pipeline top agree clock for clock, P = 2",
+          "[pipeline][rtl]") {
+  check_three_ways<2>(3);
+}
+
+namespace {
+
+/// `frames` synthetic frames of w x h (each its own texture) as both cameras' beats.
+template <int P>
+std::pair<std::vector<scw::hls::Beat<std::uint8_t, P>>, std::vector<scw::hls::Beat<std::uint8_t, P>>>
+scene_beats(int w, int h, int frames) {
+  std::vector<cv::Mat> ls, rs;
+  for (int k = 0; k < frames; ++k) {
+    const Scene s = make_scene(w, h, 100u + static_cast<std::uint32_t>(k));
+    ls.push_back(s.left);
+    rs.push_back(s.right);
+  }
+  return {scw::host::pipeline::frames_beats<P>(ls), scw::host::pipeline::frames_beats<P>(rs)};
+}
+
+}  // namespace
+
+TEST_CASE("20 frames under random input gaps and output backpressure: same results, no deadlock",
+          "[pipeline][rtl][sim]") {
+  constexpr int P = 1;
+  const int w = 48, h = 24, frames = 20;
+  const auto [left, right] = scene_beats<P>(w, h, frames);
+  const auto setup = small_setup(w, h, false);
+  Chain<P> calm(setup, PipelineEngines::all(Engine::cpp), left, right);
+  calm.run(frames, 400000);
+  REQUIRE(calm.results().size() == static_cast<std::size_t>(frames));
+  for (std::uint64_t seed : {1u, 2u}) {
+    const auto stalls = scw::sim::StallPattern::parse("random:" + std::to_string(seed));
+    Chain<P> cpp(setup, PipelineEngines::all(Engine::cpp), left, right, stalls, stalls);
+    cpp.run(frames, 2000000);
+    Chain<P> rtl(setup, scw::sim::small_build::rtl_engines<P>(), left, right, stalls, stalls);
+    rtl.run(frames, 2000000);
+    scw::sim::small_build::Top<P> top(setup);
+    const auto t = top.run(left, right, frames, 2000000, stalls, stalls);
+    INFO("seed " << seed);
+    CHECK(cpp.results() == calm.results());
+    CHECK(rtl.results() == calm.results());
+    CHECK(t.results == calm.results());
+    CHECK(result_cycles<P>(rtl) == result_cycles<P>(cpp));
+    CHECK(t.result_cycles == result_cycles<P>(cpp));
+    CHECK(cpp.cycles() > calm.cycles());  // the gaps did cost time
+  }
+}
+
+TEST_CASE("broken input frames are flagged in their result; the next frame is right",
+          "[pipeline][rtl]") {
+  constexpr int P = 1;
+  using B = scw::hls::Beat<std::uint8_t, P>;
+  const int w = 48, h = 24;
+  const auto [good_l, good_r] = scene_beats<P>(w, h, 1);
+  const auto setup = small_setup(w, h, false);
+  Chain<P> ref(setup, PipelineEngines::all(Engine::cpp), good_l, good_r);
+  ref.run(1, 100000);
+  const Result good = ref.results()[0];
+
+  // Each case: the left stream's broken frame, then a good frame; the right stream two good
+  // frames. Expected flags: the broken frame's left flag only.
+  struct Case {
+    const char* name;
+    std::vector<B> broken;
+  };
+  std::vector<Case> cases;
+  {
+    auto b = good_l;  // a short row: row 3 ends two pixels early
+    b.erase(b.begin() + 3 * w + w - 2, b.begin() + 3 * w + w);
+    b[static_cast<std::size_t>(3 * w + w - 3)].eol = true;
+    cases.push_back({"short row", b});
+  }
+  {
+    auto b = good_l;  // the frame cut short: only 10 rows, then the next frame's sof
+    b.resize(static_cast<std::size_t>(10 * w));
+    cases.push_back({"frame cut short", b});
+  }
+  {
+    auto b = good_l;  // a sof in mid-frame: row 5 starts with sof (the frame restarts there)
+    b[static_cast<std::size_t>(5 * w)].sof = true;
+    cases.push_back({"sof mid-frame", b});
+  }
+  for (const Case& c : cases) {
+    DYNAMIC_SECTION(c.name) {
+      std::vector<B> left = c.broken;
+      left.insert(left.end(), good_l.begin(), good_l.end());
+      std::vector<B> right = good_r;
+      right.insert(right.end(), good_r.begin(), good_r.end());
+      // A sof in mid-frame makes two frames of the left stream out of one: the right stream
+      // needs the same count, so it gets its own restart at the same place.
+      if (std::string(c.name) == "sof mid-frame") right[static_cast<std::size_t>(5 * w)].sof = true;
+      Chain<P> cpp(setup, PipelineEngines::all(Engine::cpp), left, right);
+      const std::size_t n = std::string(c.name) == "sof mid-frame" ? 3 : 2;
+      cpp.run(n, 400000);
+      scw::sim::small_build::Top<P> top(setup);
+      const auto t = top.run(left, right, n, 400000);
+      CHECK(t.results == cpp.results());
+      CHECK(t.result_cycles == result_cycles<P>(cpp));
+      const auto& r = cpp.results();
+      CHECK(r[0].data.input_error_left);
+      CHECK(r.back() == good);  // the frame after the broken one is exact
+      CHECK_FALSE(r.back().data.input_error_left);
+      CHECK_FALSE(r.back().data.input_error_right);
+    }
+  }
+}
+
+TEST_CASE("a Tsukuba crop: RTL chain = C++ chain = the floating-point chain's frame result",
+          "[pipeline][rtl][ref]") {
+  constexpr int P = 1;
+  const cv::Mat l = scw::disparity::read_grey_image(std::string(SCW_DATA_DIR) +
+                                                    "/tsukuba/scene1.row3.col3.ppm");
+  const cv::Mat r = scw::disparity::read_grey_image(std::string(SCW_DATA_DIR) +
+                                                    "/tsukuba/scene1.row3.col4.ppm");
+  // The lamp, the head and the table: 128 x 96 from (128, 96).
+  const cv::Rect crop(128, 96, 128, 96);
+  const cv::Mat lc = l(crop).clone(), rc = r(crop).clone();
+  auto opt = small_options();
+  opt.warning.focal_px = 615.0;  // the camera scripts/run.sh assumes for Tsukuba
+  opt.warning.baseline_m = 0.1;
+  opt.min_area = 60;
+  const auto knots = scw::host::pipeline::identity_knots(128, 96, Build<P>::kGridLog2);
+  const auto setup = scw::host::pipeline::make_setup(128, 96, Build<P>::kGridLog2, opt, knots,
+                                                     knots, 1);
+  const auto left = scw::host::pipeline::frames_beats<P>({lc, lc});
+  const auto right = scw::host::pipeline::frames_beats<P>({rc, rc});
+  Chain<P> cpp(setup, PipelineEngines::all(Engine::cpp), left, right);
+  cpp.run(2, 200000);
+  Chain<P> rtl(setup, scw::sim::small_build::rtl_engines<P>(), left, right);
+  rtl.run(2, 200000);
+  REQUIRE(cpp.results().size() == 2);
+  CHECK(rtl.results() == cpp.results());
+  CHECK(cpp.results()[1] == cpp.results()[0]);  // the same pair twice: the same answer
+
+  const auto ref = scw::host::pipeline::reference_frame(lc, rc, 9, opt);
+  const auto& got = cpp.results()[0].data.frame;
+  INFO("objects " << got.objects << " (reference " << ref.result.objects << "), severity "
+                  << static_cast<int>(got.severity));
+  REQUIRE(ref.result.objects >= 2);
+  CHECK(got.objects == ref.result.objects);
+  CHECK(got.obstacles == ref.result.obstacles);
+  CHECK(static_cast<int>(got.severity) == static_cast<int>(ref.result.severity));
+  REQUIRE(ref.result.index >= 0);
+  CHECK(got.index == ref.result.index);
+  CHECK(std::abs(got.distance_mm / 1000.0 - ref.result.deciding.distance_m) < 0.01);
+  CHECK(got.closest_x == ref.objects[static_cast<std::size_t>(ref.result.index)].closest_x);
+  CHECK(got.d_max == ref.objects[static_cast<std::size_t>(ref.result.index)].d_max);
+}
+
+TEST_CASE("a setup no stage can take is refused with the reason", "[pipeline]") {
+  auto s = small_setup(64, 32, false);
+  s.width = 130;
+  CHECK_THROWS_WITH(Chain<1>(s, PipelineEngines::all(Engine::cpp), {}, {}),
+                    Catch::Contains("width 130"));
+  s = small_setup(64, 32, false);
+  s.left_knots.pop_back();
+  CHECK_THROWS_WITH(Chain<1>(s, PipelineEngines::all(Engine::cpp), {}, {}),
+                    Catch::Contains("knots"));
+  s = small_setup(64, 32, false);
+  s.lead_rows = 15;
+  CHECK_THROWS_WITH(Chain<1>(s, PipelineEngines::all(Engine::cpp), {}, {}),
+                    Catch::Contains("lead"));
+  // P = 2's chain has no Verilated rectifier: asking for one names the block.
+  CHECK_THROWS_WITH(Chain<2>(small_setup(64, 32, false), PipelineEngines::all(Engine::rtl), {}, {}),
+                    Catch::Contains("frame check RTL is not built"));
+}

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: Apache-2.0
+// [pipeline][app] `scw run --engine rtl`: the application chain with the stages as Verilated RTL
+// gives the frame the C++ models give; a frame no build takes is refused with the builds named.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "host/app/run.hpp"
+#include "host/disparity/run_model.hpp"
+#include "host/pipeline/rtl_engine.hpp"
+
+namespace {
+
+cv::Mat tsukuba(const char* name) {
+  return scw::disparity::read_grey_image(std::string(SCW_DATA_DIR) + "/tsukuba/" + name);
+}
+
+scw::app::RunOptions crop_options() {
+  scw::app::RunOptions o;
+  o.window = 9;
+  o.min_disp = 0;
+  o.max_disp = 15;
+  o.tiles_x = 2;
+  o.tiles_y = 2;
+  o.min_area = 60;
+  o.warning.focal_px = 615.0;
+  o.warning.baseline_m = 0.1;
+  o.warning.cu_px = 63.5;
+  o.warning.cv_px = 47.5;
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("run with the Verilated stages equals run with the C++ models on a Tsukuba crop",
+          "[pipeline][app][rtl]") {
+  const cv::Rect crop(128, 96, 128, 96);
+  const cv::Mat l = tsukuba("scene1.row3.col3.ppm")(crop).clone();
+  const cv::Mat r = tsukuba("scene1.row3.col4.ppm")(crop).clone();
+  const auto o = crop_options();
+  scw::app::Runner cpp(o, std::nullopt);
+  scw::app::Runner rtl(o, std::nullopt, scw::host::pipeline::make_rtl_engine(o, 128, 96));
+  for (int frame = 0; frame < 2; ++frame) {
+    const auto a = cpp.process(l, r);
+    const auto b = rtl.process(l, r);  // throws if the RTL's objects or result differ
+    CHECK(b.result == a.result);
+    CHECK(cv::countNonZero(a.disparity != b.disparity) == 0);
+    CHECK(cv::countNonZero(a.left != b.left) == 0);
+    CHECK(b.segmentation.objects == a.segmentation.objects);
+    CHECK(scw::app::frame_json(frame, b) == scw::app::frame_json(frame, a));
+    CHECK(a.result.objects >= 2);
+    CHECK_FALSE(b.input_error);
+  }
+}
+
+TEST_CASE("run --engine rtl refuses a frame no build takes and names the builds",
+          "[pipeline][app]") {
+  auto o = crop_options();
+  CHECK_THROWS_WITH(scw::host::pipeline::make_rtl_engine(o, 384, 288),
+                    Catch::Contains("384 x 288") && Catch::Contains("small: up to 128 x 96"));
+  o.window = 11;  // no build has it
+  CHECK_THROWS_WITH(scw::host::pipeline::make_rtl_engine(o, 128, 96),
+                    Catch::Contains("window 11") && Catch::Contains("thesis"));
+  o = crop_options();
+  o.ground = true;
+  CHECK_THROWS_WITH(scw::host::pipeline::make_rtl_engine(o, 128, 96),
+                    Catch::Contains("ground"));
+}
