@@ -20,6 +20,7 @@
 #include "host/labelling/picture.hpp"
 #include "host/rectify/calibration.hpp"
 #include "host/rectify/fixed_map.hpp"
+#include "host/rectify/map_grid.hpp"
 #include "host/rectify/run_model.hpp"
 
 namespace scw::cli {
@@ -164,9 +165,6 @@ void write_frame(const fs::path& dir, const std::string& prefix, const app::Fram
 }
 
 void run(Options& o) {
-  if (o.engine == "rtl" && !o.rectified)
-    throw std::runtime_error("--engine rtl takes rectified pairs (--rectified): the Verilated "
-                             "rectifiers run an identity map here; raw pairs run with --engine cpp");
   if (!o.tiles.empty()) {
     const auto x = o.tiles.find('x');
     try {
@@ -198,7 +196,13 @@ void run(Options& o) {
             << (o.run.ground ? ", ground removal" : "") << "\n";
   app::StageEngine engine;
   if (o.engine == "rtl") {
-    engine = host::pipeline::make_rtl_engine(o.run, first.cols, first.rows);
+    host::pipeline::KnotSource knots;
+    if (!o.rectified) {  // the RTL rectifiers take the calibration as grid knots
+      const auto calib = rectify::load_stereo_calibration(o.calib, first.size());
+      const auto rect = rectify::rectify_calibration(calib);
+      knots = [calib, rect](int grid_log2) { return rectify::grid_knots(calib, rect, grid_log2); };
+    }
+    engine = host::pipeline::make_rtl_engine(o.run, first.cols, first.rows, knots);
     std::cerr << "run: the stages run as Verilated RTL; the C++ models check every object and "
                  "frame result\n";
   }

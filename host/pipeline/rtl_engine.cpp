@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "host/pipeline/setup.hpp"
+#include "host/rectify/fixed_map.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "sim/pipeline_chain.hpp"
 #if SCW_THESIS_RTL
@@ -33,7 +34,8 @@ cv::Mat picture(const std::vector<Beat>& beats, int width, int height, int type)
 }
 
 template <typename Build, typename Rtl>
-app::StageEngine engine_for(const app::RunOptions& o, int width, int height) {
+app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
+                            const KnotSource& knot_source) {
   StageOptions so;
   so.mode = o.mode;
   so.dmin = o.min_disp;
@@ -42,9 +44,20 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height) {
   so.tiles_y = o.tiles_y;
   so.min_area = o.min_area;
   so.warning = o.warning;
-  const auto knots = identity_knots(width, height, Build::kGridLog2);
-  const auto setup =
-      make_setup(width, height, Build::kGridLog2, so, knots, knots, 1);
+  std::vector<hls::rectify::KnotPoint> left, right;
+  int lead = 1;
+  if (knot_source) {
+    const auto k = knot_source(Build::kGridLog2);
+    left = k.left.knots;
+    right = k.right.knots;
+    lead = rectify::plan_for_stage({rectify::row_window(rectify::expand(k.left)),
+                                    rectify::row_window(rectify::expand(k.right))},
+                                   Build::kRectRows, "the calibration's grid maps")
+               .lead_rows;
+  } else {
+    left = right = identity_knots(width, height, Build::kGridLog2);
+  }
+  const auto setup = make_setup(width, height, Build::kGridLog2, so, left, right, lead);
   sim::check_setup<Build>(setup);
   return [setup, width, height](const cv::Mat& l, const cv::Mat& r) {
     constexpr int P = Build::kPpc;
@@ -89,17 +102,18 @@ bool takes(const app::RunOptions& o, int width, int height) {
 
 }  // namespace
 
-app::StageEngine make_rtl_engine(const app::RunOptions& o, int width, int height) {
+app::StageEngine make_rtl_engine(const app::RunOptions& o, int width, int height,
+                                 const KnotSource& knots) {
   if (o.ground)
     throw std::invalid_argument("--engine rtl: the Verilated pipeline has no ground-removal "
                                 "stage; drop --ground or use --engine cpp");
   using Small = hls::pipeline::SmallPipeline<1>;
   if (takes<Small>(o, width, height))
-    return engine_for<Small, sim::small_build::Rtl<1>::type>(o, width, height);
+    return engine_for<Small, sim::small_build::Rtl<1>::type>(o, width, height, knots);
   using Thesis = hls::pipeline::ThesisPipeline<1>;
 #if SCW_THESIS_RTL
   if (takes<Thesis>(o, width, height))
-    return engine_for<Thesis, sim::thesis_build::Rtl<1>::type>(o, width, height);
+    return engine_for<Thesis, sim::thesis_build::Rtl<1>::type>(o, width, height, knots);
   const std::string thesis = describe<Thesis>("thesis");
 #else
   const std::string thesis =
