@@ -6,7 +6,8 @@
 # rectifies a raw chessboard pair through the fixed-point rectify stage (out/rectify/); then
 # computes Tsukuba's disparity through the disparity model (out/disparity/) and segments it into
 # objects through the tiled labelling model, with the host's post-processing (out/segment/);
-# last, the whole chain with the warning stage and its overlay (out/run/).
+# the whole chain with the warning stage and its overlay (out/run/); last, the whole pipeline
+# clocked cycle by cycle, frame period and latency beside the thesis's (out/sim/).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/build.sh" --target scw
@@ -27,3 +28,8 @@ mkdir -p out/disparity
 ./build/host/cli/scw run --rectified --focal 615 --baseline 0.1 --window 9 --min-disp 0 \
   --max-disp 15 --min-area 50 --left data/tsukuba/scene1.row3.col3.ppm \
   --right data/tsukuba/scene1.row3.col4.ppm --out-dir out/run
+# The whole pipeline clocked at the thesis size (C++ models; -DSCW_THESIS_RTL=ON for all RTL),
+# beside the thesis's Table 5.7, and at the small size with every block Verilated.
+mkdir -p out/sim
+./build/host/cli/scw sim --config thesis --ppc 1 --frames 3 --engine cpp --json out/sim/thesis_p1.json
+./build/host/cli/scw sim --config small --ppc 1 --frames 3 --engine rtl --json out/sim/small_rtl.json
