@@ -86,7 +86,6 @@ void check_setup(const PipelineSetup& s) {
     fail("the rectifiers' lead of " + std::to_string(s.lead_rows) + " rows needs 1 .. " +
          std::to_string(Build::kRectRows - 2) + " (the build keeps " +
          std::to_string(Build::kRectRows) + " raw rows)");
-  using G = typename Build::map_grid;
   const int cols = ((s.width - 1) >> Build::kGridLog2) + 2;
   const int rows = ((s.height - 1) >> Build::kGridLog2) + 2;
   if (s.knot_cols != cols || s.knot_rows != rows)
@@ -94,7 +93,6 @@ void check_setup(const PipelineSetup& s) {
          ", a " + std::to_string(s.width) + " x " + std::to_string(s.height) +
          " frame at a knot every " + std::to_string(1 << Build::kGridLog2) + " px needs " +
          std::to_string(cols) + " x " + std::to_string(rows));
-  static_assert(G::kMaxKnotCols > 0 && G::kMaxKnotRows > 0);
   const auto n = static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows);
   if (s.left_knots.size() != n || s.right_knots.size() != n)
     fail("each camera needs " + std::to_string(n) + " knots (left has " +
@@ -105,7 +103,7 @@ void check_setup(const PipelineSetup& s) {
   if (d.dmin < 0 || d.dmin + nd > s.width)
     fail("disparities " + std::to_string(d.dmin) + " .. " + std::to_string(d.dmin + nd - 1) +
          " do not fit a " + std::to_string(s.width) + "-pixel row");
-  if (d.num_disp != 0 && d.num_disp != Build::kNumDisp && d.num_disp > Build::kNumDisp)
+  if (d.num_disp > Build::kNumDisp)
     fail("num_disp " + std::to_string(d.num_disp) + " is more than the built " +
          std::to_string(Build::kNumDisp) + " candidates");
   if (s.height < Build::kWindow || s.width < Build::kWindow)

@@ -7,18 +7,17 @@
 
 #include <cmath>
 #include <cstdint>
-#include <random>
 #include <string>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "hls/pipeline/pipeline_params.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/pipeline/reference_chain.hpp"
 #include "host/pipeline/setup.hpp"
+#include "host/pipeline/synthetic.hpp"
 #include "sim/pipeline_chain.hpp"
 #include "sim/pipeline_top.hpp"
 
@@ -36,39 +35,12 @@ using Rtl = scw::sim::small_build::Rtl<P>;
 template <int P>
 using Chain = scw::sim::small_build::Chain<P>;
 
-/// A synthetic raw pair: a textured background at disparity 3 and a textured box at 11
-/// (nearer), the right image shifted by the disparities and by half a pixel down, so that the
-/// right camera's map (knots half a pixel up) has work to do.
-struct Scene {
-  cv::Mat left, right;
-};
-
-Scene make_scene(int w, int h, std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> tex(0, 255);
-  cv::Mat bg(h + 2, w + 32, CV_8U), box(h + 2, w + 32, CV_8U);
-  for (int y = 0; y < bg.rows; ++y)
-    for (int x = 0; x < bg.cols; ++x) {
-      bg.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(tex(rng));
-      box.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(tex(rng));
-    }
-  cv::GaussianBlur(bg, bg, cv::Size(3, 3), 0.8);
-  cv::GaussianBlur(box, box, cv::Size(3, 3), 0.8);
-  Scene s{cv::Mat(h, w, CV_8U), cv::Mat(h, w, CV_8U)};
-  const int bx0 = w / 3, bx1 = w / 3 + w / 4, by0 = h / 4, by1 = h / 4 + h / 2;
-  const auto px = [&](int x, int y, bool right_cam) {
-    const bool in_box = x >= bx0 && x < bx1 && y >= by0 && y < by1;
-    const int d = in_box ? 11 : 3;
-    const int sx = x + (right_cam ? d : 0) + 16;  // the right camera sees x - d at x
-    return in_box ? box.at<std::uint8_t>(y + 1, sx) : bg.at<std::uint8_t>(y + 1, sx);
-  };
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      s.left.at<std::uint8_t>(y, x) = px(x, y, false);
-      // scene point (x + d) of the left image appears at x in the right one
-      s.right.at<std::uint8_t>(y, x) = px(x - 0, y, true);
-    }
-  return s;
+/// A synthetic pair (host/pipeline/synthetic.hpp): a textured background at disparity 3 and a
+/// box at 11. small_setup's right-camera map moves the right image half a pixel, so the
+/// rectifiers have work to do.
+scw::host::pipeline::SyntheticPair make_scene(int w, int h, std::uint32_t seed) {
+  return scw::host::pipeline::synthetic_pair(w, h, 3, {{w / 3, h / 4, w / 3 + w / 4, h * 3 / 4, 11}},
+                                             seed);
 }
 
 /// The settings of the small build's runs: opencv mode, disparities 0 .. 15, 2 x 2 tiles,
@@ -108,7 +80,7 @@ void check_three_ways(int frames) {
   const int w = 64, h = 32;
   std::vector<cv::Mat> ls, rs;
   for (int k = 0; k < frames; ++k) {
-    const Scene s = make_scene(w, h, 11u + static_cast<std::uint32_t>(k));
+    const auto s = make_scene(w, h, 11u + static_cast<std::uint32_t>(k));
     ls.push_back(s.left);
     rs.push_back(s.right);
   }
@@ -175,7 +147,7 @@ std::pair<std::vector<scw::hls::Beat<std::uint8_t, P>>, std::vector<scw::hls::Be
 scene_beats(int w, int h, int frames) {
   std::vector<cv::Mat> ls, rs;
   for (int k = 0; k < frames; ++k) {
-    const Scene s = make_scene(w, h, 100u + static_cast<std::uint32_t>(k));
+    const auto s = make_scene(w, h, 100u + static_cast<std::uint32_t>(k));
     ls.push_back(s.left);
     rs.push_back(s.right);
   }
