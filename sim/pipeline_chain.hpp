@@ -22,6 +22,8 @@
 #include "sim/frame_check_component.hpp"
 #include "sim/frame_check_model.hpp"
 #include "sim/frame_check_rtl.hpp"
+#include "sim/ground_model.hpp"
+#include "sim/ground_rtl.hpp"
 #include "sim/join.hpp"
 #include "sim/labelling_model.hpp"
 #include "sim/labelling_rtl.hpp"
@@ -42,8 +44,9 @@ namespace scw::sim {
 /// The Verilated classes of one build, one per block (`void`: not built). Whoever names them
 /// static_asserts each one's parameters (the V<prefix>_<module> class) against the build's,
 /// with the *_params_match functions, as every Verilated model in the project is checked.
+/// `Ground` is the optional ground filter, which the scw_pipeline top does not have.
 template <typename Check, typename MapGrid, typename Rectify, typename Disparity, typename Split,
-          typename Labelling, typename Warning, typename Merge>
+          typename Labelling, typename Warning, typename Merge, typename Ground = void>
 struct PipelineRtl {
   using check = Check;
   using map_grid = MapGrid;
@@ -53,6 +56,7 @@ struct PipelineRtl {
   using labelling = Labelling;
   using warning = Warning;
   using merge = Merge;
+  using ground = Ground;
 };
 using NoRtl = PipelineRtl<void, void, void, void, void, void, void, void>;
 
@@ -104,10 +108,16 @@ class PipelineChain {
     if constexpr (P > 1) {
       split_ = &sim_.fifo<label_beat>("split", d.disp);
       add_split(engines.split);
-      add_labelling(engines.labelling, *split_);
+      label_in_ = split_;
     } else {
-      add_labelling(engines.labelling, *disp_);
+      label_in_ = disp_;
     }
+    if (s.ground) {
+      auto& filtered = sim_.fifo<label_beat>("ground", d.disp);
+      add_ground(engines.ground, *label_in_, filtered);
+      label_in_ = &filtered;
+    }
+    add_labelling(engines.labelling, *label_in_);
     add_warning(engines.warning, res);
     add_merge(engines.merge, res, flag_l, flag_r);
     load_knots(grid_l, s.left_knots);
@@ -158,6 +168,9 @@ class PipelineChain {
   Fifo<raw_beat>& rect_left() { return *rect_l_; }
   Fifo<raw_beat>& rect_right() { return *rect_r_; }
   Fifo<disp_beat>& disparity() { return *disp_; }
+  /// What the labelling stage takes: the disparity, split to one pixel per beat and with the
+  /// road removed when the setup has a ground filter.
+  Fifo<label_beat>& labelling_input() { return *label_in_; }
   Fifo<hls::labelling::LabelPacket>& objects() { return *objects_; }
   Fifo<Result>& result_fifo() { return *out_; }
 
@@ -272,6 +285,24 @@ class PipelineChain {
     }
   }
 
+  void add_ground(Engine e, Fifo<label_beat>& in, Fifo<label_beat>& out) {
+    using Params = typename Build::ground;
+    static_assert(std::is_same_v<typename Params::in_beat, label_beat>,
+                  "the ground filter takes what the labelling stage takes");
+    const hls::ground::GroundConfig cfg = *setup_.ground;
+    if (e == Engine::cpp) {
+      sim_.add<StreamComponent<GroundModel<Params>>>("ground", GroundModel<Params>(cfg), in, out);
+      return;
+    }
+    using VM = typename Rtl::ground;
+    if constexpr (kBuilt<VM>) {
+      sim_.add<StreamComponent<GroundRtl<VM, Params>>>(
+          "ground", make_ground_rtl<VM, Params>("ground", cfg), in, out);
+    } else {
+      not_built("ground");
+    }
+  }
+
   void add_labelling(Engine e, Fifo<label_beat>& in) {
     using Params = typename Build::labelling;
     const auto cfg = setup_.labelling_config();
@@ -331,6 +362,7 @@ class PipelineChain {
   Fifo<raw_beat>* rect_r_ = nullptr;
   Fifo<disp_beat>* disp_ = nullptr;
   Fifo<label_beat>* split_ = nullptr;
+  Fifo<label_beat>* label_in_ = nullptr;
   Fifo<hls::labelling::LabelPacket>* objects_ = nullptr;
   Fifo<Result>* out_ = nullptr;
   Sink<Result>* sink_ = nullptr;

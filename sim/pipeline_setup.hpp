@@ -3,11 +3,13 @@
 // RTL, the FIFO depths, and the checks that turn a setup no stage can take into a clear error.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "hls/disparity/disparity_params.hpp"
+#include "hls/ground/ground_params.hpp"
 #include "hls/labelling/labelling_params.hpp"
 #include "hls/rectify/map_grid.hpp"
 #include "hls/rectify/rectify_params.hpp"
@@ -27,8 +29,9 @@ struct PipelineEngines {
   Engine labelling = Engine::cpp;
   Engine warning = Engine::cpp;
   Engine merge = Engine::cpp;
+  Engine ground = Engine::cpp;  // when the setup has a ground filter
 
-  static PipelineEngines all(Engine e) { return {e, e, e, e, e, e, e, e}; }
+  static PipelineEngines all(Engine e) { return {e, e, e, e, e, e, e, e, e}; }
 };
 
 /// Depths of the links (scw_pipeline's *FifoDepth parameters; the defaults are the top's).
@@ -51,6 +54,9 @@ struct PipelineSetup {
   hls::disparity::DisparityConfig disparity;  // width and height are taken from above
   hls::labelling::LabellingConfig labelling;  // width and height are taken from above
   hls::warning::WarningConfig warning;
+  /// Ground removal (thesis 6.2) between the disparity stage (after the beat split) and the
+  /// labelling stage; absent: no filter, the graph of scw_pipeline.
+  std::optional<hls::ground::GroundConfig> ground;
   int knot_cols = 0, knot_rows = 0;  // each camera's knot grid, row-major
   std::vector<hls::rectify::KnotPoint> left_knots, right_knots;
   PipelineDepths depths;
@@ -109,6 +115,7 @@ void check_setup(const PipelineSetup& s) {
   if (s.height < Build::kWindow || s.width < Build::kWindow)
     fail("the frame is smaller than the " + std::to_string(Build::kWindow) + " x " +
          std::to_string(Build::kWindow) + " window");
+  if (s.ground) hls::ground::check_config(*s.ground);
   const PipelineDepths& q = s.depths;
   for (int depth : {q.raw, q.map, q.rect, q.disp, q.obj, q.res, q.flag})
     if (depth < 1) fail("every FIFO depth must be at least 1");

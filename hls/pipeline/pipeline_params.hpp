@@ -4,6 +4,7 @@
 #pragma once
 
 #include "hls/disparity/disparity_params.hpp"
+#include "hls/ground/ground_params.hpp"
 #include "hls/labelling/labelling_params.hpp"
 #include "hls/rectify/map_grid.hpp"
 #include "hls/rectify/rectify_params.hpp"
@@ -36,6 +37,9 @@ struct PipelineParams {
   using labelling = ::scw::hls::labelling::LabellingParams<MaxWidthPx, MaxHeight, MaxTilesX, MaxTilesY,
                                                LabelsPerTile, MaxObjects>;
   using warning = ::scw::hls::warning::WarningParams<MaxDisparityPx>;
+  /// The optional ground-removal filter (thesis 6.2) between the beat split and labelling:
+  /// one pixel per beat, like the labelling stage.
+  using ground = ::scw::hls::ground::GroundParams<MaxWidthPx>;
 };
 
 /// The thesis configuration (architecture section 2): 1280 x 480, window 21, 45 candidates

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "host/pipeline/setup.hpp"
+#include "host/reference/ground_ref.hpp"
 #include "host/rectify/fixed_map.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "sim/pipeline_chain.hpp"
@@ -57,7 +58,10 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
   } else {
     left = right = identity_knots(width, height, Build::kGridLog2);
   }
-  const auto setup = make_setup(width, height, Build::kGridLog2, so, left, right, lead);
+  auto setup = make_setup(width, height, Build::kGridLog2, so, left, right, lead);
+  // The host's chain filters with the same rule and settings (app::Runner).
+  if (o.ground)
+    setup.ground = scw::ground::default_ground_config(o.warning.baseline_m, o.camera_height_m);
   sim::check_setup<Build>(setup);
   return [setup, width, height](const cv::Mat& l, const cv::Mat& r) {
     constexpr int P = Build::kPpc;
@@ -66,13 +70,13 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
                                          frames_beats<P>({r}));
     chain.rect_left().record(true);
     chain.rect_right().record(true);
-    chain.disparity().record(true);
+    chain.labelling_input().record(true);  // the disparity, after ground removal when on
     chain.objects().record(true);
     chain.run(1, 64 * static_cast<std::int64_t>(width) * height + 1000000);
     app::StageOutputs s;
     s.left = picture(chain.rect_left().recorded(), width, height, CV_8U);
     s.right = picture(chain.rect_right().recorded(), width, height, CV_8U);
-    s.disparity = picture(chain.disparity().recorded(), width, height, CV_16S);
+    s.disparity = picture(chain.labelling_input().recorded(), width, height, CV_16S);
     for (const auto& w : chain.objects().recorded()) {
       if (w.data.is_status) s.status = w.data.status;
       else s.objects.push_back(w.data.object);
@@ -104,9 +108,6 @@ bool takes(const app::RunOptions& o, int width, int height) {
 
 app::StageEngine make_rtl_engine(const app::RunOptions& o, int width, int height,
                                  const KnotSource& knots) {
-  if (o.ground)
-    throw std::invalid_argument("--engine rtl: the Verilated pipeline has no ground-removal "
-                                "stage; drop --ground or use --engine cpp");
   using Small = hls::pipeline::SmallPipeline<1>;
   if (takes<Small>(o, width, height))
     return engine_for<Small, sim::small_build::Rtl<1>::type>(o, width, height, knots);

@@ -27,6 +27,8 @@ scw_verilate(scw_rtl_pipeline_small TOP scw_labelling PREFIX Vpipe_labelling STA
                     MaxObjects=64 NO_TRACE)
 scw_verilate(scw_rtl_pipeline_small TOP scw_warning PREFIX Vpipe_warning STAGE warning
              PARAMS MaxDisparityPx=32 NO_TRACE)
+scw_verilate(scw_rtl_pipeline_small TOP scw_ground PREFIX Vpipe_ground STAGE ground
+             PARAMS MaxWidthPx=128 NO_TRACE)
 scw_verilate(scw_rtl_pipeline_small TOP scw_result_merge PREFIX Vpipe_merge STAGE pipeline
              FILES scw_result_merge.sv NO_TRACE)
 

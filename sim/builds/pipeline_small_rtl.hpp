@@ -5,6 +5,8 @@
 
 #include <cstdint>
 
+#include "Vpipe_ground.h"
+#include "Vpipe_ground_scw_ground.h"
 #include "Vpipe_labelling.h"
 #include "Vpipe_labelling_scw_labelling.h"
 #include "Vpipe_merge.h"
@@ -47,6 +49,7 @@ static_assert(beat_split_params_match<Vpipe_p2_split_scw_beat_split, std::uint16
 static_assert(labelling_params_match<Vpipe_labelling_scw_labelling, Build<1>::labelling>());
 static_assert(warning_params_match<Vpipe_warning_scw_warning, Build<1>::warning>());
 static_assert(result_merge_params_match<Vpipe_merge_scw_result_merge>());
+static_assert(ground_params_match<Vpipe_ground_scw_ground, Build<1>::ground>());
 static_assert(pipeline_params_match<Vpipe_p1_top_scw_pipeline, Build<1>>());
 static_assert(pipeline_params_match<Vpipe_p2_top_scw_pipeline, Build<2>>());
 
@@ -56,14 +59,14 @@ template <>
 struct Rtl<1> {
   using type = PipelineRtl<Vpipe_p1_check, Vpipe_p1_grid, Vpipe_p1_rectify,
                                      Vpipe_p1_disparity, void, Vpipe_labelling, Vpipe_warning,
-                                     Vpipe_merge>;
+                                     Vpipe_merge, Vpipe_ground>;
   using top = Vpipe_p1_top;
 };
 template <>
 struct Rtl<2> {
   // The blocks whose only difference at P = 2 is their width run in the top (PipelineTop).
   using type = PipelineRtl<void, void, void, void, Vpipe_p2_split, Vpipe_labelling,
-                           Vpipe_warning, Vpipe_merge>;
+                           Vpipe_warning, Vpipe_merge, Vpipe_ground>;
   using top = Vpipe_p2_top;
 };
 

@@ -27,5 +27,7 @@ scw_verilate(scw_rtl_pipeline_thesis TOP scw_labelling PREFIX Vthesis_labelling 
                     MaxObjects=256 NO_TRACE)
 scw_verilate(scw_rtl_pipeline_thesis TOP scw_warning PREFIX Vthesis_warning STAGE warning
              PARAMS MaxDisparityPx=128 NO_TRACE)
+scw_verilate(scw_rtl_pipeline_thesis TOP scw_ground PREFIX Vthesis_ground STAGE ground
+             PARAMS MaxWidthPx=1280 NO_TRACE)
 scw_verilate(scw_rtl_pipeline_thesis TOP scw_result_merge PREFIX Vthesis_merge STAGE pipeline
              FILES scw_result_merge.sv NO_TRACE)

@@ -5,6 +5,8 @@
 
 #include <cstdint>
 
+#include "Vthesis_ground.h"
+#include "Vthesis_ground_scw_ground.h"
 #include "Vthesis_labelling.h"
 #include "Vthesis_labelling_scw_labelling.h"
 #include "Vthesis_merge.h"
@@ -51,6 +53,7 @@ static_assert(disparity_params_match<Vthesis_p1_disparity_scw_disparity,
 static_assert(labelling_params_match<Vthesis_labelling_scw_labelling, Build<1>::labelling>());
 static_assert(warning_params_match<Vthesis_warning_scw_warning, Build<1>::warning>());
 static_assert(result_merge_params_match<Vthesis_merge_scw_result_merge>());
+static_assert(ground_params_match<Vthesis_ground_scw_ground, Build<1>::ground>());
 
 #if SCW_THESIS_RTL_P2
 static_assert(frame_check_params_match<Vthesis_p2_check_scw_frame_check, Check<2>>());
@@ -67,14 +70,14 @@ template <>
 struct Rtl<1> {
   using type = PipelineRtl<Vthesis_p1_check, Vthesis_p1_grid, Vthesis_p1_rectify,
                            Vthesis_p1_disparity, void, Vthesis_labelling, Vthesis_warning,
-                           Vthesis_merge>;
+                           Vthesis_merge, Vthesis_ground>;
 };
 #if SCW_THESIS_RTL_P2
 template <>
 struct Rtl<2> {
   using type = PipelineRtl<Vthesis_p2_check, Vthesis_p2_grid, Vthesis_p2_rectify,
                            Vthesis_p2_disparity, Vthesis_p2_split, Vthesis_labelling,
-                           Vthesis_warning, Vthesis_merge>;
+                           Vthesis_warning, Vthesis_merge, Vthesis_ground>;
 };
 #endif
 
