@@ -34,6 +34,8 @@ struct Options {
   double focal = 0, baseline = 0, cx = -1, cy = -1;
   double calib_unit_m = 1.0;
   std::string engine = "cpp";
+  std::string maps = "full";  // raw pairs: full quantised maps, or expanded grid knots
+  int grid_log2 = 4;          // knot spacing of --maps grid (the thesis build's)
   std::string mode = "opencv";
   std::string tiles;
   app::RunOptions run;
@@ -121,8 +123,14 @@ std::optional<app::RectifyMaps> set_up_camera(Options& o, cv::Size size) {
   w.cu_px = rect.principal_point().x;
   w.cv_px = rect.principal_point().y;
   app::RectifyMaps maps;
-  maps.left = rectify::quantise_map(rect.map1_x, rect.map1_y);
-  maps.right = rectify::quantise_map(rect.map2_x, rect.map2_y);
+  if (o.maps == "grid") {  // what the RTL's map-grid expanders stream (docs/rectify.md)
+    const auto knots = rectify::grid_knots(calib, rect, o.grid_log2);
+    maps.left = rectify::expand(knots.left);
+    maps.right = rectify::expand(knots.right);
+  } else {
+    maps.left = rectify::quantise_map(rect.map1_x, rect.map1_y);
+    maps.right = rectify::quantise_map(rect.map2_x, rect.map2_y);
+  }
   const auto plan = rectify::plan_for_stage(
       {rectify::row_window(maps.left), rectify::row_window(maps.right)}, rectify::kHostStageRows,
       o.calib);
@@ -263,6 +271,16 @@ void add_run_command(CLI::App& app) {
                   "built size: small up to 128 x 96, window 9, 16 disparities, 2x2 tiles)")
       ->capture_default_str()
       ->check(CLI::IsMember({"cpp", "rtl"}));
+  cmd->add_option("--maps", o->maps,
+                  "Raw pairs on --engine cpp: full (the calibration's maps, quantised) or grid "
+                  "(knots every 2^--grid-log2 px, expanded as the RTL's map-grid stage does; "
+                  "--engine rtl always runs grid knots at its build's spacing)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"full", "grid"}));
+  cmd->add_option("--grid-log2", o->grid_log2,
+                  "Knot spacing of --maps grid, log2 px (4: the thesis build's 16 px)")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 7));
   cmd->add_option("--tiles", o->tiles, "Labelling tile grid, columns x rows (default 4x4)");
   cmd->add_option("--window", o->run.window, "SAD window N")->capture_default_str();
   cmd->add_option("--min-disp", o->run.min_disp, "Smallest candidate disparity")->capture_default_str();

@@ -16,6 +16,8 @@ void add_run_command(CLI::App& app);
 void add_train_command(CLI::App& app);
 void add_synth_command(CLI::App& app);  // `scw synth`
 void add_sim_command(CLI::App& app);    // `scw sim`
+void add_scene_command(CLI::App& app);  // `scw scene`
+void add_eval_command(CLI::App& app);   // `scw eval`
 /// `scw vectors rectify`, added under the `vectors` subcommand.
 void add_vectors_rectify_command(CLI::App& vectors);
 /// `scw vectors disparity`, added under the `vectors` subcommand.

@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   scw::cli::add_train_command(app);
   scw::cli::add_synth_command(app);
   scw::cli::add_sim_command(app);
+  scw::cli::add_scene_command(app);
+  scw::cli::add_eval_command(app);
   scw::cli::add_vectors_command(app);
   scw::cli::add_vectors_rectify_command(*app.get_subcommand("vectors"));
   scw::cli::add_vectors_disparity_command(*app.get_subcommand("vectors"));

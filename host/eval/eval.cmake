@@ -1,0 +1,7 @@
+# SPDX-License-Identifier: Apache-2.0
+# `scw eval`'s logic: reading truth and results, the comparison, the report and the plots.
+# CMAKE_CURRENT_LIST_DIR, so the paths hold wherever this file is included from.
+target_sources(scw_host PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/records.cpp ${CMAKE_CURRENT_LIST_DIR}/compare.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/report.cpp ${CMAKE_CURRENT_LIST_DIR}/chart.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/plots.cpp)

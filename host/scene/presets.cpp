@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: Apache-2.0
+// The preset scenes (host/scene/presets.hpp).
+#include "host/scene/presets.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace scw::host::scene {
+namespace {
+
+// Sizes (width along x, height, depth along z), metres.
+const cv::Vec3d kPedestrian{0.60, 1.75, 0.40};
+const cv::Vec3d kCyclist{1.80, 1.80, 0.60};  // side on: long along x
+const cv::Vec3d kCar{1.80, 1.50, 4.20};
+
+/// An object's look: a grey mean between 60 and 150 (dark clothes, a light car), off the road's
+/// 110 and below the sky's 170 .. 200 so the eye finds it, and a seed of its own.
+SurfaceLook look(std::uint32_t seed, int id, double base) {
+  return {seed * 1000003U + static_cast<std::uint32_t>(id), base, 40.0};
+}
+
+/// Position k of n evenly from a to b (both ends included), exact at the ends.
+double lerp(double a, double b, int k, int n) {
+  return k == n - 1 ? b : a + (b - a) * k / (n - 1);
+}
+
+struct Preset {
+  const char* name;
+  int frames;
+};
+constexpr Preset kPresets[] = {
+    {"distance-sweep", 49}, {"cyclist-crossing", 57}, {"pedestrian-running", 38}};
+
+std::string names_list() {
+  std::string s;
+  for (const auto& p : kPresets) s += (s.empty() ? "" : ", ") + std::string(p.name);
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> preset_names() {
+  std::vector<std::string> v;
+  for (const auto& p : kPresets) v.emplace_back(p.name);
+  return v;
+}
+
+int default_frames(const std::string& preset) {
+  for (const auto& p : kPresets)
+    if (preset == p.name) return p.frames;
+  throw std::invalid_argument("unknown scene preset '" + preset + "'; the presets are " +
+                              names_list());
+}
+
+Sequence make_preset(const std::string& preset, std::optional<int> frames, std::uint32_t seed) {
+  const int own = default_frames(preset);  // throws for an unknown name, frames given or not
+  const int n = frames.value_or(own);
+  if (n < 2)
+    throw std::invalid_argument("scene preset '" + preset + "': " + std::to_string(n) +
+                                " frames; give at least 2 (the motion's two ends)");
+  Sequence s;
+  s.preset = preset;
+  s.seed = seed;
+  for (int k = 0; k < n; ++k) {
+    SceneFrame f;
+    f.index = k;
+    if (preset == "distance-sweep") {
+      // Fig. 5.5: a pedestrian straight ahead, 30 m down to 6 m from the bumper in 0.5 m steps.
+      // The thesis measured static poses; here the pedestrian walks slowly towards the car
+      // (0.5 m/s, one pose a second by default), so a tracker sees a plausible speed.
+      const double step = 24.0 / (n - 1);
+      s.frame_period_s = step / 0.5;
+      f.objects.push_back(standing_box(1, Kind::pedestrian, kPedestrian, 0.0,
+                                       lerp(30.0, 6.0, k, n), look(seed, 1, 85.0)));
+    } else if (preset == "cyclist-crossing") {
+      // Fig. 5.12: a cyclist crossing 8 m ahead, left to right at 5 m/s.
+      const double step = 14.0 / (n - 1);
+      s.frame_period_s = step / 5.0;
+      f.objects.push_back(standing_box(1, Kind::cyclist, kCyclist, lerp(-7.0, 7.0, k, n), 8.0,
+                                       look(seed, 1, 70.0)));
+    } else {
+      // Fig. 5.13: a pedestrian running at the car at 3 m/s past a parked car on the left.
+      const double step = 18.5 / (n - 1);
+      s.frame_period_s = step / 3.0;
+      f.objects.push_back(standing_box(1, Kind::pedestrian, kPedestrian, -0.4,
+                                       lerp(25.0, 6.5, k, n), look(seed, 1, 85.0)));
+      f.objects.push_back(standing_box(2, Kind::car, kCar, -4.5, 14.0, look(seed, 2, 140.0)));
+    }
+    f.time_s = k * s.frame_period_s;
+    s.frames.push_back(std::move(f));
+  }
+  return s;
+}
+
+}  // namespace scw::host::scene
