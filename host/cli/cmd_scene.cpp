@@ -22,6 +22,7 @@ struct Options {
   int frames = 0;
   bool frames_given = false;
   std::uint32_t seed = 1;
+  bool markings = false;
 };
 
 void run(const Options& o) {
@@ -41,7 +42,7 @@ void run(const Options& o) {
               << (tty ? "\033[K" : "\n") << (tty && done == total ? "\n" : "") << std::flush;
   };
   const sc::WrittenScene w =
-      sc::write_scene(seq, renderer, o.out_dir, sc::RenderOptions{1.0, o.seed}, progress);
+      sc::write_scene(seq, renderer, o.out_dir, sc::RenderOptions{1.0, o.seed, o.markings}, progress);
   std::cout << "wrote " << w.frames << " raw pairs (" << sc::left_name(0) << " .. "
             << sc::right_name(w.frames - 1) << "), calibration.yml, truth.jsonl and scene.json in "
             << w.dir << "\n"
@@ -77,6 +78,9 @@ void add_scene_command(CLI::App& app) {
                   "scene.json")
       ->required();
   cmd->add_option("--seed", o->seed, "Texture and camera-noise seed")->capture_default_str();
+  cmd->add_flag("--markings", o->markings,
+                "Paint dashed lane markings on the road (far dashes merge into one marking that "
+                "the warning stage takes for an obstacle beside the tunnel: docs/scene.md)");
   cmd->callback([o, frames] {
     o->frames_given = frames->count() > 0;
     run(*o);

@@ -64,7 +64,7 @@ double gaussian(std::uint64_t key) {
 
 Hit cast_ray(const cv::Vec3d& origin, const cv::Vec3d& direction,
              const std::vector<SceneObject>& objects, double pixel_rad, int subsamples,
-             std::uint32_t ground_seed) {
+             std::uint32_t ground_seed, bool markings) {
   const double len = cv::norm(direction);
   const cv::Vec3d unit = direction / len;
   double best_t = kInf;
@@ -99,7 +99,7 @@ Hit cast_ray(const cv::Vec3d& origin, const cv::Vec3d& direction,
     // the grazing angle.
     const double across = h.distance_m * pixel_rad / subsamples;
     const double along = across / std::max(-unit[1], 1e-9);
-    h.grey = ground_grey(p[0], p[2], across, along, ground_seed);
+    h.grey = ground_grey(p[0], p[2], across, along, ground_seed, markings);
   } else {
     const double elevation = std::atan2(unit[1], std::hypot(unit[0], unit[2]));
     h.distance_m = kInf;
@@ -112,7 +112,7 @@ Renderer::Renderer(const StereoRig& rig, int subsamples)
     : rig_(rig), left_(rig, Side::left, subsamples), right_(rig, Side::right, subsamples) {}
 
 cv::Mat Renderer::render_clean(Side s, const std::vector<SceneObject>& objects,
-                               std::uint32_t ground_seed) const {
+                               std::uint32_t ground_seed, bool markings) const {
   const RayTable& rays = this->rays(s);
   const int n = rays.subsamples();
   const double pixel_rad = 1.0 / rays.focal_px();
@@ -126,7 +126,7 @@ cv::Mat Renderer::render_clean(Side s, const std::vector<SceneObject>& objects,
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
           sum += cast_ray(rays.origin(), rays.direction(u * n + i, v * n + j), objects, pixel_rad,
-                          n, ground_seed)
+                          n, ground_seed, markings)
                      .grey;
       row[u] = static_cast<float>(sum * norm);
     }
@@ -135,7 +135,7 @@ cv::Mat Renderer::render_clean(Side s, const std::vector<SceneObject>& objects,
 }
 
 cv::Mat Renderer::render(Side s, const SceneFrame& frame, const RenderOptions& options) const {
-  const cv::Mat clean = render_clean(s, frame.objects, options.seed);
+  const cv::Mat clean = render_clean(s, frame.objects, options.seed, options.markings);
   cv::Mat out(clean.size(), CV_8UC1);
   // Key: seed, frame, camera, pixel; each field in its own bits so no two pixels share a key.
   const std::uint64_t base = (static_cast<std::uint64_t>(options.seed) << 32) ^

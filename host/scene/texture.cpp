@@ -136,7 +136,7 @@ double fractal_noise(double x, double y, std::uint32_t seed, const Octave* octav
 }
 
 double ground_grey(double x, double z, double footprint_x_m, double footprint_z_m,
-                   std::uint32_t seed) {
+                   std::uint32_t seed, bool markings) {
   // Grain: each octave fades by the footprint across and is averaged over the one along.
   double grain = 0.0;
   for (int i = 0; i < 4; ++i) {
@@ -150,6 +150,7 @@ double ground_grey(double x, double z, double footprint_x_m, double footprint_z_
                                     seed + 0x9e3779b9U * (i + 1U));
   }
   const double asphalt = kAsphaltMean + 0.5 * kAsphaltContrast * grain * unit_scale(kAsphalt, 4);
+  if (!markings) return asphalt;
   double paint = 0.0;
   const double along =
       (dash_length_below(z + 0.5 * footprint_z_m) - dash_length_below(z - 0.5 * footprint_z_m)) /

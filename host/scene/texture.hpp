@@ -35,7 +35,7 @@ double value_noise_band(double x, double y0, double y1, std::uint32_t seed);
 /// over that footprint: the grain across the road stays sharp, as in a real camera, and nothing
 /// aliases into texture that differs between the two views.
 double ground_grey(double x, double z, double footprint_x_m, double footprint_z_m,
-                   std::uint32_t seed);
+                   std::uint32_t seed, bool markings = true);
 
 /// How an object's surface looks: its noise seed, mean grey level and amplitude (two standard
 /// deviations of its texture).

@@ -123,7 +123,8 @@ nlohmann::json rig_json(const StereoRig& rig, int subsamples, const RenderOption
           {"camera_in_vehicle_m", vec(rig.camera_in_vehicle_m)},
           {"vehicle_origin_m", {w.vehicle_origin.x(), w.vehicle_origin.y(), w.vehicle_origin.z()}},
           {"subsamples", subsamples},
-          {"noise_sigma", options.noise_sigma}};
+          {"noise_sigma", options.noise_sigma},
+          {"markings", options.markings}};
 }
 
 std::string run_command(const std::string& dir, const std::string& out_dir,
