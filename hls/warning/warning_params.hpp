@@ -48,6 +48,18 @@ struct WarningConfig {
 
 enum class Severity : std::uint8_t { kNone = 0, kLow = 1, kMedium = 2, kHigh = 3 };
 
+/// "none", "low", "medium", "high": the one spelling results.jsonl, truth.jsonl, the vectors and
+/// the printouts use ("?" for a code outside the four).
+constexpr const char* severity_name(Severity s) {
+  switch (s) {
+    case Severity::kNone: return "none";
+    case Severity::kLow: return "low";
+    case Severity::kMedium: return "medium";
+    case Severity::kHigh: return "high";
+  }
+  return "?";
+}
+
 /// `v / 2^n` rounded half up (an arithmetic shift of v + 2^(n-1), as the RTL does it).
 constexpr std::int64_t rshift_round(std::int64_t v, int n) {
   return (v + (std::int64_t{1} << (n - 1))) >> n;

@@ -16,15 +16,6 @@
 
 namespace scw::app {
 
-const char* severity_name(hls::warning::Severity s) {
-  switch (s) {
-    case hls::warning::Severity::kLow: return "low";
-    case hls::warning::Severity::kMedium: return "medium";
-    case hls::warning::Severity::kHigh: return "high";
-    default: return "none";
-  }
-}
-
 struct Runner::AppLayer {
   std::unique_ptr<Classifier> classifier;
   Tracker tracker;

@@ -127,6 +127,6 @@ nlohmann::json frame_json(int frame, const FrameOutput& out);
 nlohmann::json result_json(const hls::warning::FrameResult& r);
 
 /// "none", "low", "medium", "high".
-const char* severity_name(hls::warning::Severity s);
+using hls::warning::severity_name;
 
 }  // namespace scw::app

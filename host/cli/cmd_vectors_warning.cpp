@@ -306,15 +306,6 @@ FrameResult expected_result(const Frame& f, const WarningConfig& cfg) {
   return r;
 }
 
-const char* severity_name(Severity s) {
-  switch (s) {
-    case Severity::kNone: return "none";
-    case Severity::kLow: return "low";
-    case Severity::kMedium: return "medium";
-    case Severity::kHigh: return "high";
-  }
-  return "?";
-}
 
 void check_frame(const Frame& f, const FrameResult& got, const WarningConfig& cfg) {
   const std::string at = "vectors warning: frame '" + f.name + "': ";

@@ -2,7 +2,6 @@
 // Reading truth.jsonl, scene.json and results.jsonl (docs/eval.md).
 #include "host/eval/records.hpp"
 
-#include <array>
 #include <climits>
 #include <fstream>
 #include <functional>
@@ -18,8 +17,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-constexpr std::array<const char*, 4> kNames = {"none", "low", "medium", "high"};
 
 // What to do about a broken line, by file: the remedy is to regenerate it with its writer.
 constexpr const char* kTruthFix = "regenerate the folder with scw scene";
@@ -108,14 +105,9 @@ std::ifstream open_file(const fs::path& p, const std::string& what) {
 
 }  // namespace
 
-const char* severity_name(Severity s) {
-  const auto i = static_cast<std::size_t>(s);
-  return i < kNames.size() ? kNames[i] : "?";
-}
-
 std::optional<Severity> parse_severity(const std::string& name) {
-  for (std::size_t i = 0; i < kNames.size(); ++i)
-    if (name == kNames[i]) return static_cast<Severity>(i);
+  for (Severity s : {Severity::kNone, Severity::kLow, Severity::kMedium, Severity::kHigh})
+    if (name == severity_name(s)) return s;
   return std::nullopt;
 }
 

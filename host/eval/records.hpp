@@ -15,9 +15,8 @@ namespace scw::host::eval {
 
 using hls::warning::Severity;
 
-/// "none", "low", "medium", "high": the names both files use.
-const char* severity_name(Severity s);
-/// The severity a name stands for; nullopt for any other string.
+using hls::warning::severity_name;
+/// The severity a name stands for (severity_name's inverse); nullopt for any other string.
 std::optional<Severity> parse_severity(const std::string& name);
 
 /// One line of truth.jsonl: what the scene renderer knows about a frame.

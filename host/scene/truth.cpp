@@ -9,15 +9,6 @@
 
 namespace scw::host::scene {
 
-const char* severity_name(Severity s) {
-  switch (s) {
-    case Severity::kLow: return "low";
-    case Severity::kMedium: return "medium";
-    case Severity::kHigh: return "high";
-    default: return "none";
-  }
-}
-
 Severity judge(bool in_tunnel, double gap_m, double distance_m,
                const host::warning::WarningSetup& w) {
   if (in_tunnel)

@@ -42,8 +42,7 @@ struct FrameTruth {
   std::vector<ObjectTruth> objects;
 };
 
-/// "none", "low", "medium", "high" (the names `scw run` writes).
-const char* severity_name(Severity s);
+using hls::warning::severity_name;  // the names `scw run` writes
 
 /// Eq. 5.2 as docs/warning.md states it: in the tunnel high if D <= high, medium if D < medium,
 /// else low; outside, medium if the gap is at most near and D < medium, else low.
