@@ -9,15 +9,6 @@
 
 namespace scw::host::scene {
 
-Severity judge(bool in_tunnel, double gap_m, double distance_m,
-               const host::warning::WarningSetup& w) {
-  if (in_tunnel)
-    return distance_m <= w.high_m     ? Severity::kHigh
-           : distance_m < w.medium_m ? Severity::kMedium
-                                     : Severity::kLow;
-  return gap_m <= w.near_m && distance_m < w.medium_m ? Severity::kMedium : Severity::kLow;
-}
-
 bool in_view(const SceneObject& o, const StereoRig& rig) {
   std::vector<cv::Point3d> corners;
   int ahead = 0;
@@ -64,7 +55,7 @@ ObjectTruth object_truth(const SceneObject& o, const StereoRig& rig,
   t.in_tunnel = gap <= 0.0;
   t.obstacle = o.box_max[1] - o.box_min[1] >= w.min_height_m;
   t.in_view = in_view(o, rig);
-  if (t.obstacle) t.severity = judge(t.in_tunnel, t.gap_m, t.distance_m, w);
+  if (t.obstacle) t.severity = judge_severity(t.in_tunnel, t.gap_m, t.distance_m, w);
   return t;
 }
 

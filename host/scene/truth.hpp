@@ -10,6 +10,7 @@
 #include "hls/warning/warning_params.hpp"
 #include "host/scene/rig.hpp"
 #include "host/scene/scene.hpp"
+#include "host/warning/reference.hpp"
 #include "host/warning/setup.hpp"
 
 namespace scw::host::scene {
@@ -44,10 +45,8 @@ struct FrameTruth {
 
 using hls::warning::severity_name;  // the names `scw run` writes
 
-/// Eq. 5.2 as docs/warning.md states it: in the tunnel high if D <= high, medium if D < medium,
-/// else low; outside, medium if the gap is at most near and D < medium, else low.
-Severity judge(bool in_tunnel, double gap_m, double distance_m,
-               const host::warning::WarningSetup& w);
+/// Eq. 5.2 as the floating-point warning reference judges it (host/warning/reference.hpp).
+using host::warning::judge_severity;
 
 /// Whether some of the box is in the left image: all of it in front of the camera and its
 /// corners' projection (with distortion) overlapping the image, or the box reaching across the

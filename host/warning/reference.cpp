@@ -57,20 +57,17 @@ RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s) {
 
   r.obstacle = r.height_m >= s.min_height_m;
   if (!r.obstacle) return r;
-  const double dist = r.judged_distance_m();
-  if (r.in_tunnel) {
-    // Eq. 5.2.
-    if (dist <= s.high_m)
-      r.severity = Severity::kHigh;
-    else if (dist < s.medium_m)
-      r.severity = Severity::kMedium;
-    else
-      r.severity = Severity::kLow;
-  } else {
-    // Section 5.4: outside the tunnel at most medium, and only when near it and not far ahead.
-    r.severity = r.gap_m <= s.near_m && dist < s.medium_m ? Severity::kMedium : Severity::kLow;
-  }
+  r.severity = judge_severity(r.in_tunnel, r.gap_m, r.judged_distance_m(), s);
   return r;
+}
+
+Severity judge_severity(bool in_tunnel, double gap_m, double distance_m, const WarningSetup& s) {
+  if (in_tunnel)  // eq. 5.2
+    return distance_m <= s.high_m ? Severity::kHigh
+           : distance_m < s.medium_m ? Severity::kMedium
+                                     : Severity::kLow;
+  // Section 5.4: outside the tunnel at most medium, and only when near it and not far ahead.
+  return gap_m <= s.near_m && distance_m < s.medium_m ? Severity::kMedium : Severity::kLow;
 }
 
 RefFrame fold_ref(const std::vector<hls::labelling::Object>& objects, const WarningSetup& s) {

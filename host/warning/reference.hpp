@@ -48,6 +48,12 @@ struct RefFrame {
   RefEval deciding;  // valid when index >= 0
 };
 
+/// Eq. 5.2 and section 5.4 on an obstacle, as docs/warning.md states them: in the tunnel high if
+/// D <= high, medium if D < medium, else low; outside, medium if the gap is at most near and
+/// D < medium, else low. The reference and the synthetic scenes' truth both judge with it.
+hls::warning::Severity judge_severity(bool in_tunnel, double gap_m, double distance_m,
+                                      const WarningSetup& s);
+
 /// Evaluates one labelling object in double precision: no integer arithmetic, thresholds taken
 /// from `s` in metres as given (not rounded to the stage's millimetres).
 RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s);
