@@ -14,6 +14,7 @@
 
 #include "hls/disparity/disparity_params.hpp"
 #include "host/cli/commands.hpp"
+#include "host/io/image_file.hpp"
 #include "host/disparity/run_model.hpp"
 
 namespace scw::cli {
@@ -61,7 +62,7 @@ cv::Mat to_colour(const cv::Mat& d16, std::int16_t invalid, int dmin, int dmax) 
 void write(const std::string& path, const cv::Mat& m) {
   const std::filesystem::path p(path);
   if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-  if (!cv::imwrite(path, m)) throw std::runtime_error("cannot write '" + path + "'");
+  host::io::write_image(p, m);
 }
 
 void run(const Options& o) {

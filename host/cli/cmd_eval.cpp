@@ -12,6 +12,7 @@
 #include "host/eval/plots.hpp"
 #include "host/eval/records.hpp"
 #include "host/eval/report.hpp"
+#include "host/io/image_file.hpp"
 
 namespace scw::cli {
 namespace {
@@ -33,8 +34,8 @@ void run(const Options& o) {
   const fs::path dir = fs::path(o.results).parent_path();
   const fs::path plot = o.plot.empty() ? dir / "distance_error.png" : fs::path(o.plot);
   const fs::path sev = o.severity_plot.empty() ? dir / "severity.png" : fs::path(o.severity_plot);
-  ev::write_png(plot, ev::distance_error_plot(report));
-  ev::write_png(sev, ev::severity_plot(report));
+  host::io::write_image(plot, ev::distance_error_plot(report));
+  host::io::write_image(sev, ev::severity_plot(report));
   std::cout << "wrote " << plot.string() << ", " << sev.string();
   if (!o.json.empty()) {
     ev::write_report_json(o.json, report);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/io/image_file.hpp"
 #include "host/rectify/calibration.hpp"
 #include "host/rectify/fixed_map.hpp"
 #include "host/rectify/run_model.hpp"
@@ -89,9 +90,7 @@ void run(const Options& o) {
 
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);
-  const auto write = [](const std::filesystem::path& p, const cv::Mat& m) {
-    if (!cv::imwrite(p.string(), m)) throw std::runtime_error("cannot write '" + p.string() + "'");
-  };
+  const auto write = host::io::write_image;
   write(dir / "left_rect.png", left_rect);
   write(dir / "right_rect.png", right_rect);
   write(dir / "side_by_side.png", side_by_side(left_rect, right_rect));

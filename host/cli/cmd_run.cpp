@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `scw run`: the whole chain on a stereo pair or a folder of numbered pairs; writes the
 // rectified pair, disparity, labels, the warning overlay and results.jsonl (docs/run.md).
-#include <unistd.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -15,7 +13,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "host/app/run.hpp"
+#include "host/io/image_file.hpp"
 #include "host/cli/commands.hpp"
+#include "host/cli/progress.hpp"
 #include "host/pipeline/rtl_engine.hpp"
 #include "host/labelling/picture.hpp"
 #include "host/rectify/calibration.hpp"
@@ -73,31 +73,20 @@ std::string frame_prefix(const fs::path& left) {
   return first == std::string::npos ? "frame_" : stem.substr(first, last - first + 1) + "_";
 }
 
-/// One line that redraws itself on a terminal, one line per step otherwise (logs stay readable).
-class Progress {
- public:
-  explicit Progress(std::size_t total) : total_(total), tty_(isatty(STDERR_FILENO) != 0) {}
-  void show(std::size_t done, const std::string& note) {
-    const int width = 30;
-    const int filled = static_cast<int>(width * done / std::max<std::size_t>(total_, 1));
-    std::cerr << (tty_ ? "\r" : "") << "[" << std::string(filled, '#')
-              << std::string(width - filled, '.') << "] " << done << "/" << total_ << " frames"
-              << (note.empty() ? "" : "  " + note) << (tty_ ? "\033[K" : "\n") << std::flush;
-    if (tty_ && done == total_) std::cerr << "\n";
-  }
+using host::io::write_image;
 
- private:
-  std::size_t total_;
-  bool tty_;
+/// How the pairs are rectified: the host's fixed-point maps for the C++ models, and the grid
+/// knots for the Verilated rectifiers (at the spacing of the build that takes the frame). Both
+/// empty for pairs already rectified.
+struct Rectification {
+  std::optional<app::RectifyMaps> maps;
+  host::pipeline::KnotSource knots;
 };
 
-void write_png(const fs::path& p, const cv::Mat& m) {
-  if (!cv::imwrite(p.string(), m)) throw std::runtime_error("cannot write '" + p.string() + "'");
-}
-
-/// Reads the camera from the calibration (rectified f, principal point, baseline) and builds
-/// the fixed-point maps, or takes --focal/--baseline/--cx/--cy for rectified pairs.
-std::optional<app::RectifyMaps> set_up_camera(Options& o, cv::Size size) {
+/// Reads the camera from the calibration (rectified f, principal point, baseline) once and builds
+/// the fixed-point maps and the knot source from it, or takes --focal/--baseline/--cx/--cy for
+/// rectified pairs.
+Rectification set_up_camera(Options& o, cv::Size size) {
   auto& w = o.run.warning;
   if (o.rectified) {
     if (o.focal <= 0 || o.baseline <= 0)
@@ -106,7 +95,7 @@ std::optional<app::RectifyMaps> set_up_camera(Options& o, cv::Size size) {
     w.baseline_m = o.baseline;
     w.cu_px = o.cx >= 0 ? o.cx : (size.width - 1) / 2.0;
     w.cv_px = o.cy >= 0 ? o.cy : (size.height - 1) / 2.0;
-    return std::nullopt;
+    return {};
   }
   if (o.calib.empty())
     throw std::runtime_error("give --calib CALIB for raw pairs, or --rectified with --focal, "
@@ -135,7 +124,8 @@ std::optional<app::RectifyMaps> set_up_camera(Options& o, cv::Size size) {
       {rectify::row_window(maps.left), rectify::row_window(maps.right)}, rectify::kHostStageRows,
       o.calib);
   maps.lead_rows = plan.lead_rows;
-  return maps;
+  return {maps,
+          [calib, rect](int grid_log2) { return rectify::grid_knots(calib, rect, grid_log2); }};
 }
 
 /// Each object with the warning stage's view of it and the application layer's.
@@ -160,15 +150,15 @@ void write_objects_csv(const fs::path& p, const app::FrameOutput& f) {
 }
 
 void write_frame(const fs::path& dir, const std::string& prefix, const app::FrameOutput& f) {
-  write_png(dir / (prefix + "left_rect.png"), f.left);
-  write_png(dir / (prefix + "right_rect.png"), f.right);
-  write_png(dir / (prefix + "disparity16.png"), f.disparity);
+  write_image(dir / (prefix + "left_rect.png"), f.left);
+  write_image(dir / (prefix + "right_rect.png"), f.right);
+  write_image(dir / (prefix + "disparity16.png"), f.disparity);
   cv::Mat q4;
   f.disparity.convertTo(q4, CV_16UC1);  // invalid (negative) codes saturate to 0: black
-  write_png(dir / (prefix + "disparity.png"), labelling::disparity_picture(q4));
-  write_png(dir / (prefix + "labels.png"), f.segmentation.labels);
-  write_png(dir / (prefix + "labels_color.png"), labelling::colour_labels(f.segmentation.labels));
-  write_png(dir / (prefix + "overlay.png"), f.overlay);
+  write_image(dir / (prefix + "disparity.png"), labelling::disparity_picture(q4));
+  write_image(dir / (prefix + "labels.png"), f.segmentation.labels);
+  write_image(dir / (prefix + "labels_color.png"), labelling::colour_labels(f.segmentation.labels));
+  write_image(dir / (prefix + "overlay.png"), f.overlay);
   write_objects_csv(dir / (prefix + "objects.csv"), f);
 }
 
@@ -195,7 +185,7 @@ void run(Options& o) {
     pairs.emplace_back(o.left, o.right);
   }
   const cv::Mat first = disparity::read_grey_image(pairs.front().first.string());
-  auto maps = set_up_camera(o, first.size());
+  auto camera = set_up_camera(o, first.size());
   std::cerr << "run: " << pairs.size() << (pairs.size() == 1 ? " pair" : " pairs") << ", "
             << first.cols << " x " << first.rows << " px, f " << o.run.warning.focal_px
             << " px, baseline " << o.run.warning.baseline_m << " m, principal point ("
@@ -204,17 +194,11 @@ void run(Options& o) {
             << (o.run.ground ? ", ground removal" : "") << "\n";
   app::StageEngine engine;
   if (o.engine == "rtl") {
-    host::pipeline::KnotSource knots;
-    if (!o.rectified) {  // the RTL rectifiers take the calibration as grid knots
-      const auto calib = rectify::load_stereo_calibration(o.calib, first.size());
-      const auto rect = rectify::rectify_calibration(calib);
-      knots = [calib, rect](int grid_log2) { return rectify::grid_knots(calib, rect, grid_log2); };
-    }
-    engine = host::pipeline::make_rtl_engine(o.run, first.cols, first.rows, knots);
+    engine = host::pipeline::make_rtl_engine(o.run, first.cols, first.rows, camera.knots);
     std::cerr << "run: the stages run as Verilated RTL; the C++ models check every object and "
                  "frame result\n";
   }
-  app::Runner runner(o.run, std::move(maps), std::move(engine));
+  app::Runner runner(o.run, std::move(camera.maps), std::move(engine));
 
   const fs::path dir(o.out_dir);
   fs::create_directories(dir);

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `scw scene`: renders a preset street scene through the synthetic stereo rig and writes the raw
 // pairs, the calibration and per-frame ground truth (docs/scene.md).
-#include <unistd.h>
-
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -10,6 +8,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/progress.hpp"
 #include "host/scene/presets.hpp"
 #include "host/scene/render.hpp"
 #include "host/scene/write.hpp"
@@ -36,13 +35,11 @@ void run(const Options& o) {
             << " s apart, seed " << seq.seed << "; building the ray tables\n";
   const sc::StereoRig rig;
   const sc::Renderer renderer(rig);
-  const bool tty = isatty(STDERR_FILENO) != 0;
-  const auto progress = [tty](int done, int total) {
-    std::cerr << (tty ? "\r" : "") << "scene: frame " << done << "/" << total
-              << (tty ? "\033[K" : "\n") << (tty && done == total ? "\n" : "") << std::flush;
-  };
+  Progress bar(static_cast<std::size_t>(n));
+  const auto progress = [&bar](int done, int) { bar.show(static_cast<std::size_t>(done)); };
   const sc::WrittenScene w =
-      sc::write_scene(seq, renderer, o.out_dir, sc::RenderOptions{1.0, o.seed, o.markings}, progress);
+      sc::write_scene(seq, renderer, o.out_dir, sc::RenderOptions{1.0, o.seed, o.markings},
+                      progress);
   std::cout << "wrote " << w.frames << " raw pairs (" << sc::left_name(0) << " .. "
             << sc::right_name(w.frames - 1) << "), calibration.yml, truth.jsonl and scene.json in "
             << w.dir << "\n"

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/io/image_file.hpp"
 #include "host/labelling/hu_moments.hpp"
 #include "host/labelling/picture.hpp"
 #include "host/labelling/postprocess.hpp"
@@ -112,9 +113,7 @@ std::string px(int q4) {
   return s;
 }
 
-void write_png(const std::filesystem::path& p, const cv::Mat& m) {
-  if (!cv::imwrite(p.string(), m)) throw std::runtime_error("cannot write '" + p.string() + "'");
-}
+using host::io::write_image;
 
 std::ofstream open_csv(const std::filesystem::path& p) {
   std::ofstream f(p);
@@ -188,9 +187,9 @@ void run(const Options& o) {
   const labelling::Segmentation seg = labelling::segment(in.q4, cfg);
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);
-  write_png(dir / "labels.png", seg.labels);
+  write_image(dir / "labels.png", seg.labels);
   write_objects_csv(dir / "objects.csv", seg.objects_by_label);
-  write_png(dir / "labels_color.png", labelling::colour_labels(seg.labels));
+  write_image(dir / "labels_color.png", labelling::colour_labels(seg.labels));
   std::string wrote = "labels.png, objects.csv, labels_color.png";
   std::string regions_text;
   if (o.post) {
@@ -199,7 +198,7 @@ void run(const Options& o) {
     for (std::size_t g = 0; g < regions.size(); ++g)
       items.push_back({static_cast<int>(g) + 1, regions[g].hull.box, regions[g].hull.polygon,
                        regions[g].visible});
-    write_png(dir / "regions.png",
+    write_image(dir / "regions.png",
               labelling::draw_overlay(labelling::disparity_picture(in.q4), items));
     write_regions_csv(dir / "regions.csv", regions);
     wrote += ", regions.png, regions.csv";

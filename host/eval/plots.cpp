@@ -171,14 +171,4 @@ cv::Mat severity_plot(const EvalReport& r, cv::Size size) {
   return img;
 }
 
-void write_png(const std::filesystem::path& file, const cv::Mat& img) {
-  bool ok = false;
-  try {
-    ok = cv::imwrite(file.string(), img);
-  } catch (const cv::Exception&) {
-    ok = false;  // e.g. an extension OpenCV has no writer for: reported below like a bad path
-  }
-  if (!ok) throw std::runtime_error("cannot write '" + file.string() + "'");
-}
-
 }  // namespace scw::host::eval

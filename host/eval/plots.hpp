@@ -41,7 +41,4 @@ Axes severity_axes(const EvalReport& r, cv::Size size = kPlotSize);
 /// shaded, a legend. CV_8UC3 of `size`, white background.
 cv::Mat severity_plot(const EvalReport& r, cv::Size size = kPlotSize);
 
-/// Writes a PNG. Throws std::runtime_error when it cannot.
-void write_png(const std::filesystem::path& file, const cv::Mat& img);
-
 }  // namespace scw::host::eval

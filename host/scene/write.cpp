@@ -10,8 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "host/io/image_file.hpp"
 #include "host/warning/setup.hpp"
 
 namespace scw::host::scene {
@@ -217,14 +216,7 @@ WrittenScene write_scene(const Sequence& s, const Renderer& renderer, const std:
     const StereoImages img = renderer.render_pair(f, options);
     for (const auto& [name, m] : {std::pair{left_name(f.index), img.left},
                                   std::pair{right_name(f.index), img.right}}) {
-      const std::string p = (d / name).string();
-      bool ok = false;
-      try {
-        ok = cv::imwrite(p, m);
-      } catch (const cv::Exception& e) {
-        throw std::runtime_error("cannot write '" + p + "': " + e.err);
-      }
-      if (!ok) throw std::runtime_error("cannot write '" + p + "'");
+      io::write_image(d / name, m);
     }
     truth << truth_json(frame_truth(f, rig)).dump() << "\n";
     if (!truth) throw std::runtime_error("cannot write '" + (d / "truth.jsonl").string() + "'");

@@ -20,6 +20,7 @@
 #include "host/eval/plots.hpp"
 #include "host/eval/records.hpp"
 #include "host/eval/report.hpp"
+#include "host/io/image_file.hpp"
 
 namespace {
 
@@ -390,11 +391,14 @@ TEST_CASE("the severity plot: truth and measurement at their levels per frame", 
   }
 }
 
-TEST_CASE("write_png writes a file and refuses a path it cannot write", "[eval]") {
+TEST_CASE("a plot is written, and a path that cannot be written is refused by name", "[eval]") {
   const fs::path p = fs::temp_directory_path() / "scw_test_eval_plot.png";
-  ev::write_png(p, cv::Mat(10, 10, CV_8UC3, cv::Scalar::all(255)));
+  scw::host::io::write_image(p, cv::Mat(10, 10, CV_8UC3, cv::Scalar::all(255)));
   CHECK(fs::file_size(p) > 0);
   fs::remove(p);
-  CHECK_THROWS_AS(ev::write_png("/nonexistent_dir/x.png", cv::Mat(10, 10, CV_8UC3)),
-                  std::runtime_error);
+  const cv::Mat img(10, 10, CV_8UC3);
+  CHECK_THROWS_WITH(scw::host::io::write_image("/nonexistent_dir/x.png", img),
+                    Catch::Contains("/nonexistent_dir/x.png"));
+  CHECK_THROWS_WITH(scw::host::io::write_image(p.string() + ".nosuchformat", img),
+                    Catch::Contains("nosuchformat"));
 }
