@@ -3,21 +3,24 @@
 // object descriptors, clock by clock as the RTL does it (docs/labelling.md).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "hls/labelling/edge_queue.hpp"
-#include "hls/labelling/labelling_params.hpp"
-#include "hls/labelling/union_find.hpp"
+#include "hls/common/reg_fifo.hpp"
+#include "hls/labelling/labelling_lane.hpp"
 
 namespace scw::hls::labelling {
 
-/// Edges the queue holds; the input is taken while at most kEdgeQueue - 4 are queued (two from
-/// the pixel in decision, two from the pixel being taken).
-inline constexpr int kEdgeQueue = 8;
+/// The width of every lane's strip but the last (which has the rest): tile_w x tile columns /
+/// lanes.
+inline int strip_width(const LabellingConfig& cfg, int lanes) {
+  const int tx = (cfg.width + cfg.tile_w - 1) / cfg.tile_w;
+  return cfg.tile_w * (tx / lanes);
+}
 
 /// Throws std::invalid_argument naming the field if `cfg` does not fit a stage built with
 /// `Params`.
@@ -39,14 +42,33 @@ void check_config(const LabellingConfig& cfg) {
          std::to_string(Params::kMaxTilesY) + ": use larger tiles");
   if (cfg.floor < 0 || cfg.floor > 0x7fff) fail("floor outside 0 .. 32767");
   if (cfg.min_area < 0) fail("min_area must be >= 0");
+  constexpr int n = Params::kLanes;
+  if (n > 1) {
+    const std::string lanes = " over " + std::to_string(n) + " lanes (pixels per beat)";
+    if (cfg.width % n != 0)
+      fail("width " + std::to_string(cfg.width) + " is not a whole number of beats" + lanes);
+    if (tx % n != 0)
+      fail(std::to_string(tx) + " tile columns do not split evenly" + lanes +
+           ": choose tile_w so that ceil(width / tile_w) is a multiple of " + std::to_string(n));
+    const int strip = strip_width(cfg, n);
+    if (strip % n != 0)
+      fail("strips of " + std::to_string(strip) + " px (tile_w x " + std::to_string(tx / n) +
+           ") are not a whole number of beats" + lanes);
+    if (strip > Params::kLaneWidthPx)
+      fail("strips of " + std::to_string(strip) + " px; this build's lanes hold " +
+           std::to_string(Params::kLaneWidthPx) + " px: use narrower tiles");
+  }
 }
 
 /// The stage. Phases (docs/labelling.md):
-///   kInit     after reset: clear the parent RAM, one node per clock
-///   kFrame    take beats: S0 takes a pixel and reads the row buffer; S1 decides its node and
-///             queues edges; S2 adds it to its node's descriptor; the merge unit runs alongside
-///   kDrain    after the frame's last pixel (or a sof in mid-frame): wait for S1, S2, the queue
-///             and the merge unit
+///   kInit     after reset: clear the parent RAM (and the strip-border RAMs), one word per clock
+///   kFrame    take beats. One lane: S0 takes the pixel, S1 decides its node and queues edges, S2
+///             adds it to its node's descriptor, the merge unit runs alongside. Lanes: a beat
+///             goes whole into the FIFO of the lane whose strip it is in, and every lane runs
+///             S0 .. S2 and its merge unit on its strip, one pixel per clock
+///   kDrain    after the frame's last beat (or a sof in mid-frame): wait for the lanes
+///   kBorder   (lanes only) every row: the pixels either side of each strip border that join
+///             queue an edge for a merge unit over the whole node space
 ///   kResolve  every used node in ascending order: its root (parent[] points to smaller nodes
 ///             only, so the parent's root is already known) and its descriptor into the root's
 ///   kEmit     every used node again: roots of at least min_area pixels leave as objects, up to
@@ -54,21 +76,35 @@ void check_config(const LabellingConfig& cfg) {
 template <typename Params>
 class Labelling {
  public:
-  static constexpr int W = Params::kMaxWidthPx;
   static constexpr int TX = Params::kMaxTilesX;
   static constexpr int TY = Params::kMaxTilesY;
   static constexpr int L = Params::kLabelsPerTile;
+  static constexpr int N = Params::kLanes;
   static constexpr int kNodes = Params::kNodes;
   static constexpr int kTiles = TX * TY;
+  /// Clocks of kInit: the parent RAM, a bank per lane cleared side by side, and with lanes the
+  /// border RAMs (a row per clock).
+  static constexpr int kInitClocks =
+      N == 1 ? kNodes : (kNodes / N > Params::kMaxHeight ? kNodes / N : Params::kMaxHeight);
+  /// The border sweep's queue: it reads a row while it has room for two rows' edges.
+  static constexpr int kBorderQueue = 8;
   using in_type = typename Params::in_beat;
   using out_type = LabelPacket;
-  enum Phase { kInit, kFrame, kDrain, kResolve, kEmit };
+  using Lane = LabellingLane<Params>;
+  enum Phase { kInit, kFrame, kDrain, kBorder, kResolve, kEmit };
 
-  explicit Labelling(const LabellingConfig& cfg) : cfg_(cfg) { check_config<Params>(cfg); }
+  explicit Labelling(const LabellingConfig& cfg) : cfg_(cfg) {
+    check_config<Params>(cfg);
+    const int strip = N == 1 ? cfg.width : strip_width(cfg, N);
+    for (int i = 0; i < N; ++i)
+      lanes_[i].setup(i, cfg, i * strip, i + 1 < N ? strip : cfg.width - (N - 1) * strip);
+    strip_ = strip;
+  }
 
   // ---- what the ports show this clock (registers only, except the mid-frame sof check) ----
   bool in_ready(bool in_sof) const {
-    return phase_ == kFrame && queue_.count() <= kEdgeQueue - 4 && !(in_frame_ && in_sof);
+    const bool room = N == 1 ? lanes_[0].can_take() : !fifo_[in_frame_ ? lane_ : 0].full();
+    return phase_ == kFrame && room && !(in_frame_ && in_sof);
   }
   bool out_valid() const { return out_valid_; }
   const out_type& out() const { return out_; }
@@ -77,7 +113,7 @@ class Labelling {
 
   /// Second-pass support (not part of the hardware): if set, S1 writes each pixel's node + 1
   /// (0 = none) at y * width + x; after kResolve, root(node) gives its object's root.
-  void set_node_map(std::vector<std::int32_t>* m) { node_map_ = m; }
+  void set_node_map(std::vector<std::int32_t>* m) { ram_.node_map = m; }
   int root(int node) const { return root_ram_[node]; }
 
   /// One clock edge with the inputs of this clock.
@@ -88,19 +124,19 @@ class Labelling {
     if (out_valid_ && out_ready) out_valid_ = false;
     // RAM reads issued this clock land in the read registers at the edge. Stages run in
     // pipeline order, each RAM read before that RAM's write (read-first RAMs), and every
-    // decision looks at the registers of before the edge (rd_, s1_, ...).
+    // decision looks at the registers of before the edge (rd_, r1_, ...).
     Reads rd = rd_;
     ParentPorts pp;
     switch (phase_) {
       case kInit:
-        pp.wr = true;
-        pp.wr_addr = init_;
-        pp.wr_data = 0;
-        if (++init_ == kNodes) phase_ = kFrame;
+        if (++init_ == kInitClocks) phase_ = kFrame;
         break;
       case kFrame:
       case kDrain:
-        frame_clock(take, sof_mid, in, rd, pp);
+        frame_clock(take, sof_mid, in);
+        break;
+      case kBorder:
+        border_clock(rd, pp);
         break;
       case kResolve:
         resolve_clock(rd, pp);
@@ -109,158 +145,142 @@ class Labelling {
         emit_clock(out_en, rd);
         break;
     }
-    if (pp.rd) rd.parent = parent_[pp.rd_addr];
-    if (pp.wr) parent_[pp.wr_addr] = pp.wr_data;
+    if (pp.rd) rd.parent = ram_.parent[pp.rd_addr];
+    if (pp.wr) ram_.parent[pp.wr_addr] = pp.wr_data;
     rd_ = rd;
   }
 
  private:
-  /// The RAMs' read registers.
+  /// The end-of-frame phases' RAM read registers.
   struct Reads {
     int parent = 0;
-    std::uint16_t up_d = 0;
-    int up_node1 = 0;
     Object desc;
     Object acc;
     int root = 0;
+    std::array<BorderPixel, N> left{}, right{};
   };
-  struct S1 {
-    bool valid = false;
-    disp_t d = 0;  // 0 when not an object pixel
-    int x = 0, y = 0, tile = 0;
-    bool has_left = false, has_up = false, left_same = false, up_same = false;
-  };
-  struct S2 {
-    bool valid = false;
-    int node = 0;
-    bool init = false;
-    Object pix;
+  /// One beat for one lane.
+  using LaneBeat = std::array<disp_t, N>;
+  /// A node iterator over the used (tile, label) pairs, ascending; an empty tile costs a clock.
+  struct Sweep {
+    bool active = false;
+    int tile = 0, label = 0;
   };
   struct Fwd {  // a write of the previous clock, for the read issued alongside it
     bool valid = false;
     int node = 0;
     Object value;
   };
-  /// A node iterator over the used (tile, label) pairs, ascending; an empty tile costs a clock.
-  struct Sweep {
-    bool active = false;
-    int tile = 0, label = 0;
-  };
 
   // ---------------------------------------------------------------- kFrame and kDrain
-  void frame_clock(bool take, bool sof_mid, const in_type& in, Reads& rd, ParentPorts& pp) {
-    const bool drained = phase_ == kDrain && !s1_.valid && !s2_.valid &&
-                         queue_.count() == 0 && uf_.idle();
-    // S0: take a beat, read the row buffer.
-    S1 s1_next;
-    if (take) accept(in, rd, s1_next);
-    // S1: decide the node of the pixel S0 took last clock; queue its edges.
-    S2 s2_next;
-    Edge pushes[2];
-    int n_push = 0;
-    if (s1_.valid) decide(rd, s2_next, pushes, n_push);
-    // S2: add the pixel S1 decided last clock to its node's descriptor.
-    Fwd fwd_next;
-    if (s2_.valid) {
-      const Object base = (fwd_.valid && fwd_.node == s2_.node) ? fwd_.value : rd_.desc;
-      const Object v = s2_.init ? s2_.pix : merge(base, s2_.pix);
-      desc_[s2_.node] = v;
-      fwd_next = {true, s2_.node, v};
+  void frame_clock(bool take, bool sof_mid, const in_type& in) {
+    bool lanes_idle = true;
+    for (int i = 0; i < N; ++i)
+      lanes_idle = lanes_idle && lanes_[i].idle() && (N == 1 || fifo_[i].empty());
+    const bool drained = phase_ == kDrain && lanes_idle;
+    // The beat: one lane takes its pixel (S0), or with lanes it goes into its lane's FIFO.
+    int push_lane = -1;
+    if (take) push_lane = accept(in);
+    // Each lane: S0 from its FIFO (lanes), then S1, S2 and its merge unit.
+    for (int i = 0; i < N; ++i) {
+      Lane& lane = lanes_[i];
+      bool pop = false;
+      if (N > 1 && !fifo_[i].empty() && lane.can_take()) {
+        lane.take(fifo_[i].head()[static_cast<std::size_t>(sub_[i])]);
+        pop = ++sub_[i] == N;
+        if (pop) sub_[i] = 0;
+      }
+      if (lane.step(ram_)) tile_overflow_ = true;
+      if (N > 1) {
+        LaneBeat b{};
+        const bool push = push_lane == i;
+        if (push) std::copy(in.px.begin(), in.px.end(), b.begin());
+        fifo_[i].clock(pop, &b, push ? 1 : 0);
+      }
     }
-    // Merge unit: one step on the edge at the queue's head.
-    const bool pop = uf_.clock(queue_, rd_.parent, pp);
-    queue_.clock(pop, pushes, n_push);
     if (sof_mid) {  // a sof in mid-frame: close the frame early, take the sof afterwards
       err_frame_ = err_sticky_ = true;
       in_frame_ = false;
       phase_ = kDrain;
     }
     if (drained) {
-      phase_ = kResolve;
-      sweep_ = {true, 0, 0};
+      if (N == 1) {
+        start_resolve();
+      } else {
+        phase_ = kBorder;
+        border_row_ = 0;
+        border_active_ = true;
+      }
     }
-    s1_ = s1_next;
-    s2_ = s2_next;
-    fwd_ = fwd_next;
   }
 
-  void accept(const in_type& in, Reads& rd, S1& s1) {
+  /// Frames the beat; one lane takes its pixel now, or with lanes returns the lane whose FIFO
+  /// it goes into (-1: dropped).
+  int accept(const in_type& in) {
     if (!in_frame_) {
       if (!in.sof) {  // a beat outside any frame: dropped, flagged on the next frame
         err_pending_ = err_sticky_ = true;
-        return;
+        return -1;
       }
       in_frame_ = true;
       err_frame_ = err_pending_;
       err_pending_ = false;
-      x_ = y_ = tx_ = ty_ = tcol_ = trow_ = 0;
+      x_ = y_ = lane_ = lane_col_ = 0;
     }
-    if (in.eol != (x_ == cfg_.width - 1)) err_frame_ = err_sticky_ = true;
-    const disp_t d = in.px[0];
-    s1.valid = true;
-    s1.d = is_valid(d, cfg_) ? d : 0;
-    s1.x = x_;
-    s1.y = y_;
-    s1.tile = ty_ * TX + tx_;
-    s1.has_left = x_ > 0;
-    s1.has_up = y_ > 0;
-    s1.left_same = tcol_ > 0;
-    s1.up_same = trow_ > 0;
-    rd.up_d = row_d_[x_];
-    rd.up_node1 = row_node1_[x_];
-    // Advance the raster and tile counters.
-    if (++tcol_ == cfg_.tile_w) tcol_ = 0, ++tx_;
-    if (++x_ == cfg_.width) {
-      x_ = tcol_ = tx_ = 0;
-      if (++trow_ == cfg_.tile_h) trow_ = 0, ++ty_;
-      if (++y_ == cfg_.height) {  // the frame's last pixel
+    if (in.eol != (x_ + N == cfg_.width)) err_frame_ = err_sticky_ = true;
+    const int lane = lane_;
+    if (N == 1) lanes_[0].take(in.px[0]);
+    x_ += N;
+    lane_col_ += N;
+    if (lane_col_ == strip_) lane_col_ = 0, ++lane_;
+    if (x_ == cfg_.width) {
+      x_ = lane_ = lane_col_ = 0;
+      if (++y_ == cfg_.height) {  // the frame's last beat
         in_frame_ = false;
         phase_ = kDrain;
       }
     }
+    return lane;
   }
 
-  void decide(Reads& rd, S2& s2, Edge* pushes, int& n_push) {
-    const S1& p = s1_;
-    const bool valid = p.d != 0;
-    const bool jl = valid && p.has_left && left_node1_ != 0 && joins(p.d, left_d_);
-    const bool ju = valid && p.has_up && rd_.up_node1 != 0 && joins(p.d, rd_.up_d);
-    int node1 = 0;
-    bool alloc = false;
-    if (!valid) {
-      node1 = 0;
-    } else if (jl && p.left_same) {
-      node1 = left_node1_;
-    } else if (ju && p.up_same) {
-      node1 = rd_.up_node1;
-    } else if (count_[p.tile] < L) {
-      node1 = p.tile * L + count_[p.tile] + 1;
-      ++count_[p.tile];
-      alloc = true;
-    } else {
-      tile_overflow_ = true;
-    }
-    if (node1 != 0) {
-      auto push = [&](int from1) {
-        const Edge e{from1 - 1, node1 - 1};
-        if (has_last_edge_ && e == last_edge_) return;  // same as the edge just queued
+  // ---------------------------------------------------------------- kBorder (lanes)
+  void border_clock(Reads& rd, ParentPorts& pp) {
+    const bool done = !border_active_ && !b1_valid_ && queue_.count() == 0 && uf_.idle();
+    // B0: read (and clear for the next frame) both sides of every border in the next row.
+    const bool read = border_active_ && queue_.count() <= kBorderQueue - 2 * (N - 1);
+    // B1: the row read last clock: an edge for every border whose two pixels join.
+    Edge pushes[N > 1 ? N - 1 : 1];
+    int n_push = 0;
+    if (b1_valid_) {
+      for (int b = 0; b + 1 < N; ++b) {
+        const BorderPixel& lp = rd_.right[b];     // the left strip's last pixel
+        const BorderPixel& rp = rd_.left[b + 1];  // the right strip's first pixel (later)
+        if (lp.node1 == 0 || rp.node1 == 0 || !joins(rp.d, lp.d)) continue;
+        const Edge e{lp.node1 - 1, rp.node1 - 1};
+        if (border_has_last_[b] && e == border_last_[b]) continue;  // as this border's last
         pushes[n_push++] = e;
-        last_edge_ = e;
-        has_last_edge_ = true;
-      };
-      if (jl && left_node1_ != node1) push(left_node1_);
-      if (ju && rd_.up_node1 != node1) push(rd_.up_node1);
-      s2.valid = true;
-      s2.node = node1 - 1;
-      s2.init = alloc;
-      s2.pix = pixel_object(p.x, p.y, p.d);
-      rd.desc = desc_[node1 - 1];
+        border_last_[b] = e;
+        border_has_last_[b] = true;
+      }
     }
-    row_d_[p.x] = p.d;
-    row_node1_[p.x] = node1;
-    left_d_ = p.d;
-    left_node1_ = node1;
-    if (node_map_) (*node_map_)[static_cast<std::size_t>(p.y * cfg_.width + p.x)] = node1;
+    if (read) {
+      for (int b = 0; b < N; ++b) {
+        rd.left[b] = ram_.left[b][border_row_];
+        rd.right[b] = ram_.right[b][border_row_];
+        ram_.left[b][border_row_] = {};
+        ram_.right[b][border_row_] = {};
+      }
+      if (++border_row_ == cfg_.height) border_active_ = false;
+    }
+    b1_valid_ = read;
+    const bool pop = uf_.clock(queue_, rd_.parent, pp);
+    queue_.clock(pop, pushes, n_push);
+    if (done) start_resolve();
+  }
+
+  void start_resolve() {
+    phase_ = kResolve;
+    sweep_ = {true, 0, 0};
   }
 
   // ---------------------------------------------------------------- kResolve
@@ -296,7 +316,7 @@ class Labelling {
                                                                     : rd_.root;
       root_ram_[r2_.node] = root;
       rfwd_next = {true, r2_.node, root};
-      rd.desc = desc_[r2_.node];
+      rd.desc = ram_.desc[r2_.node];
       rd.acc = acc_[root];
       r3_next = {true, r2_.node, root};
     }
@@ -328,9 +348,10 @@ class Labelling {
   bool next_node(int& node) {
     if (!sweep_.active) return false;
     const int t = sweep_.tile;
-    const bool yields = count_[t] > 0;
+    const int count = ram_.count[t];
+    const bool yields = count > 0;
     node = t * L + sweep_.label;
-    if (yields && sweep_.label + 1 < count_[t]) {
+    if (yields && sweep_.label + 1 < count) {
       ++sweep_.label;
     } else {
       sweep_.label = 0;
@@ -386,10 +407,11 @@ class Labelling {
   void end_frame() {
     phase_ = kFrame;
     e1_ = {};
-    count_.fill(0);
+    ram_.count.fill(0);
     emitted_ = 0;
     tile_overflow_ = object_overflow_ = err_frame_ = false;
-    has_last_edge_ = false;
+    for (Lane& lane : lanes_) lane.end_frame();
+    border_has_last_.fill(false);
   }
 
   struct R1 {
@@ -413,25 +435,25 @@ class Labelling {
   using E1 = R1;
 
   const LabellingConfig cfg_;
+  int strip_ = 0;
   Phase phase_ = kInit;
   int init_ = 0;
-  // Frame position and errors.
+  // Frame position (of the next beat) and errors.
   bool in_frame_ = false;
-  int x_ = 0, y_ = 0, tx_ = 0, ty_ = 0, tcol_ = 0, trow_ = 0;
+  int x_ = 0, y_ = 0, lane_ = 0, lane_col_ = 0;
   bool err_pending_ = false, err_frame_ = false, err_sticky_ = false;
   bool tile_overflow_ = false, object_overflow_ = false;
   int emitted_ = 0;
-  // Pixel pipeline.
-  S1 s1_;
-  S2 s2_;
-  Fwd fwd_, afwd_;
-  RootFwd rfwd_;
-  disp_t left_d_ = 0;
-  int left_node1_ = 0;
-  Edge last_edge_;
-  bool has_last_edge_ = false;
-  std::array<int, kTiles> count_{};
-  EdgeQueue<kEdgeQueue> queue_;
+  // Lanes, and with lanes their FIFOs and the pixel each takes next from its FIFO's head.
+  std::array<Lane, N> lanes_{};
+  std::array<RegFifo<LaneBeat, Params::kLaneFifo>, N> fifo_{};
+  std::array<int, N> sub_{};
+  // The border sweep and its merge unit over the whole node space.
+  bool border_active_ = false, b1_valid_ = false;
+  int border_row_ = 0;
+  std::array<Edge, N> border_last_{};
+  std::array<bool, N> border_has_last_{};
+  EdgeQueue<kBorderQueue> queue_;
   UnionFind uf_;
   // Sweeps.
   Sweep sweep_;
@@ -439,18 +461,16 @@ class Labelling {
   R2 r2_;
   R3 r3_;
   E1 e1_;
+  Fwd afwd_;
+  RootFwd rfwd_;
   // RAMs and their read registers.
-  std::array<disp_t, W> row_d_{};
-  std::array<int, W> row_node1_{};
-  std::array<int, kNodes> parent_{};
+  LabellingRams<Params> ram_;
   std::array<int, kNodes> root_ram_{};
-  std::array<Object, kNodes> desc_{};
   std::array<Object, kNodes> acc_{};
   Reads rd_;
   // Output register.
   bool out_valid_ = false;
   out_type out_;
-  std::vector<std::int32_t>* node_map_ = nullptr;
 };
 
 }  // namespace scw::hls::labelling

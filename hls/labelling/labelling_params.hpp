@@ -12,11 +12,13 @@ namespace scw::hls::labelling {
 /// One input disparity, Q11.4 in 16 bits as the disparity stage emits it.
 using disp_t = std::uint16_t;
 
-/// Built-in capacities of one stage. One pixel per beat. The image is cut into tiles; each tile
-/// numbers its own objects with a table of LabelsPerTile labels, and a frame may report up to
-/// MaxObjects objects.
+/// Built-in capacities of one stage. The image is cut into tiles; each tile numbers its own
+/// objects with a table of LabelsPerTile labels, and a frame may report up to MaxObjects objects.
+/// `Lanes` pixels per beat, each to its own lane: lane i labels the i-th of `Lanes` vertical
+/// strips of whole tile columns, one pixel per clock, and the strips are joined after the frame
+/// (docs/labelling.md "Lanes").
 template <int MaxWidthPx, int MaxHeight, int MaxTilesX, int MaxTilesY, int LabelsPerTile,
-          int MaxObjects>
+          int MaxObjects, int Lanes = 1>
 struct LabellingParams {
   static constexpr int kMaxWidthPx = MaxWidthPx;
   static constexpr int kMaxHeight = MaxHeight;
@@ -24,13 +26,27 @@ struct LabellingParams {
   static constexpr int kMaxTilesY = MaxTilesY;
   static constexpr int kLabelsPerTile = LabelsPerTile;
   static constexpr int kMaxObjects = MaxObjects;
+  static constexpr int kLanes = Lanes;
   /// Nodes: every (tile, label) pair; node = (ty * MaxTilesX + tx) * LabelsPerTile + label.
   static constexpr int kNodes = MaxTilesX * MaxTilesY * LabelsPerTile;
-  using in_beat = Beat<disp_t, 1>;
+  /// Each lane's row buffer holds a strip of up to this many pixels, of up to this many tile
+  /// columns; its input FIFO holds this many beats, enough that a strip's burst of beats
+  /// (arriving Lanes times faster than the lane takes them) never holds the stream.
+  static constexpr int kLaneWidthPx = MaxWidthPx / Lanes;
+  static constexpr int kLaneTilesX = MaxTilesX / Lanes;
+  static constexpr int kLaneFifo = kLaneWidthPx / Lanes > 2 ? kLaneWidthPx / Lanes : 2;
+  using in_beat = Beat<disp_t, Lanes>;
   static_assert(MaxWidthPx >= 2 && MaxHeight >= 1, "an image of at least 2 x 1");
   static_assert(MaxWidthPx <= 65535 && MaxHeight <= 65535, "coordinates travel in 16 bits");
   static_assert(MaxTilesX >= 1 && MaxTilesY >= 1 && LabelsPerTile >= 1 && MaxObjects >= 1,
                 "capacities are at least 1");
+  static_assert(Lanes == 1 || Lanes == 2 || Lanes == 4, "1, 2 or 4 lanes (pixels per beat)");
+  static_assert(MaxTilesX % Lanes == 0 && MaxWidthPx % Lanes == 0,
+                "the tile columns and the width split evenly over the lanes");
+  // With lanes, a node's lane is a bit field of its number: the RTL banks the node RAMs by lane.
+  static_assert(Lanes == 1 || ((MaxTilesX & (MaxTilesX - 1)) == 0 &&
+                               (LabelsPerTile & (LabelsPerTile - 1)) == 0),
+                "with lanes, MaxTilesX and LabelsPerTile are powers of two");
 };
 
 /// Run-time configuration (the RTL's cfg_* ports), stable while frames stream.

@@ -5,12 +5,14 @@
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 #include "hls/labelling/labelling_params.hpp"
 #include "host/labelling/second_pass.hpp"
 #include "host/reference/labelling_ref.hpp"
 #include "sim/frame_beats.hpp"
+#include "sim/labelling_model.hpp"
 #include "sim/labelling_pack.hpp"
 #include "sim/stream_check.hpp"
 #include "tests/labelling/labelling_maps.hpp"
@@ -48,13 +50,44 @@ inline std::vector<FrameOut> split_frames(const std::vector<LabelPacket>& out) {
 
 using labelling::raster_sorted;
 
-inline std::vector<InBeat> map_beats(const std::vector<DispMap>& maps) {
-  std::vector<InBeat> beats;
+/// The maps' frames as beats of `Beat` (one pixel each unless a lane build's).
+template <typename Beat = InBeat>
+std::vector<Beat> map_beats(const std::vector<DispMap>& maps) {
+  std::vector<Beat> beats;
   for (const auto& m : maps) {
-    const auto b = sim::frame_beats_of<InBeat>(m.d.data(), m.w, m.h);
+    const auto b = sim::frame_beats_of<Beat>(m.d.data(), m.w, m.h);
     beats.insert(beats.end(), b.begin(), b.end());
   }
   return beats;
+}
+
+/// A stream whose first frame is broken (the stage must flag it) and whose last is `good`.
+template <typename Beat>
+struct BrokenStream {
+  const char* name;
+  std::vector<Beat> beats;
+  bool first_whole;  // the first frame holds every pixel (its objects equal the next frame's)
+};
+
+/// Three broken streams, each giving two frames: a frame cut short after `cut` beats by the
+/// next sof; four beats before the first sof (flagged on the frame they precede); an eol on
+/// beat `eol_at`, inside a row.
+template <typename Beat>
+std::vector<BrokenStream<Beat>> broken_streams(const DispMap& good, std::size_t cut,
+                                               std::size_t eol_at) {
+  const auto whole = map_beats<Beat>({good});
+  auto then_whole = [&](std::vector<Beat> v, int times) {
+    for (int i = 0; i < times; ++i) v.insert(v.end(), whole.begin(), whole.end());
+    return v;
+  };
+  auto misplaced = whole;
+  misplaced[eol_at].eol = true;
+  return {
+      {"a frame cut short by the next sof", then_whole({whole.begin(), whole.begin() + cut}, 1),
+       false},
+      {"beats before the first sof", then_whole({whole.begin() + 5, whole.begin() + 9}, 2), true},
+      {"a row with a misplaced eol", then_whole(misplaced, 1), false},
+  };
 }
 
 /// The reference's objects of each map: the output words they make (objects + status).
@@ -85,13 +118,15 @@ inline void check_against_reference(const std::vector<FrameOut>& frames,
 template <typename Model>
 sim::RunResult<LabelPacket> run_maps(Model& model, const std::vector<DispMap>& maps,
                                      const LabellingConfig& cfg, const sim::StallPattern& pattern) {
-  return sim::run_stream(model, map_beats(maps), pattern, expected_words(maps, cfg), 4'000'000);
+  return sim::run_stream(model, map_beats<typename Model::in_type>(maps), pattern,
+                         expected_words(maps, cfg), 4'000'000);
 }
 
 /// Runs `beats` through `model` under `pattern` until `frames` status words have come out
 /// (for streams whose object counts the reference cannot tell: overflows, broken frames).
 template <typename Model>
-sim::RunResult<LabelPacket> run_until_frames(Model& model, std::vector<InBeat> beats,
+sim::RunResult<LabelPacket> run_until_frames(Model& model,
+                                             std::vector<typename Model::in_type> beats,
                                              std::size_t frames,
                                              const sim::StallPattern& pattern = {}) {
   std::size_t seen = 0, closed = 0;  // count new words only: the check runs every cycle
@@ -102,6 +137,25 @@ sim::RunResult<LabelPacket> run_until_frames(Model& model, std::vector<InBeat> b
         return closed >= frames;
       },
       400'000);
+}
+
+/// Every broken stream of `good` through the C++ model built with `Params`: the broken frame
+/// flagged, the next frame correct.
+template <typename Params>
+void check_broken_streams(const LabellingConfig& cfg, const DispMap& good, std::size_t cut,
+                          std::size_t eol_at) {
+  for (const auto& s : broken_streams<typename Params::in_beat>(good, cut, eol_at)) {
+    INFO(s.name);
+    auto m = std::make_unique<sim::LabellingModel<Params>>(cfg);
+    const auto r = run_until_frames(*m, s.beats, 2);
+    CHECK_FALSE(r.timed_out);
+    CHECK(r.violations.empty());
+    const auto f = split_frames(r.out);
+    REQUIRE(f.size() == 2);
+    CHECK(f[0].status.stream_error);
+    if (s.first_whole) CHECK(raster_sorted(f[0].objects) == raster_sorted(f[1].objects));
+    check_against_reference({f[1]}, {good}, cfg);
+  }
 }
 
 }  // namespace scw::test

@@ -176,42 +176,6 @@ TEST_CASE("labelling: more objects than MaxObjects are flagged, the next frame c
 }
 
 TEST_CASE("labelling: broken frames are flagged and the next frame is correct", "[hls]") {
-  using Small = LabellingParams<32, 16, 2, 2, 64, 64>;
-  const auto cfg = grid_config(32, 16, 2, 2, 0, 1);
-  const DispMap good = nested_u_map(32, 16);
-  const auto whole = map_beats({good});
-  auto run = [&](std::vector<InBeat> beats) {
-    auto m = std::make_unique<scw::sim::LabellingModel<Small>>(cfg);
-    const auto r = run_until_frames(*m, std::move(beats), 2);
-    CHECK_FALSE(r.timed_out);
-    CHECK(r.violations.empty());
-    return split_frames(r.out);
-  };
-  SECTION("a frame cut short by the next sof") {
-    std::vector<InBeat> beats(whole.begin(), whole.begin() + 100);
-    beats.insert(beats.end(), whole.begin(), whole.end());
-    const auto f = run(beats);
-    REQUIRE(f.size() == 2);
-    CHECK(f[0].status.stream_error);
-    check_against_reference({f[1]}, {good}, cfg);
-  }
-  SECTION("beats before the first sof") {
-    std::vector<InBeat> beats(whole.begin() + 5, whole.begin() + 9);
-    beats.insert(beats.end(), whole.begin(), whole.end());
-    beats.insert(beats.end(), whole.begin(), whole.end());
-    const auto f = run(beats);
-    REQUIRE(f.size() == 2);
-    CHECK(f[0].status.stream_error);  // flagged on the frame they precede
-    CHECK(raster_sorted(f[0].objects) == raster_sorted(f[1].objects));
-    check_against_reference({f[1]}, {good}, cfg);
-  }
-  SECTION("a row with a misplaced eol") {
-    auto beats = whole;
-    beats[40].eol = true;
-    beats.insert(beats.end(), whole.begin(), whole.end());
-    const auto f = run(beats);
-    REQUIRE(f.size() == 2);
-    CHECK(f[0].status.stream_error);
-    check_against_reference({f[1]}, {good}, cfg);
-  }
+  check_broken_streams<LabellingParams<32, 16, 2, 2, 64, 64>>(grid_config(32, 16, 2, 2, 0, 1),
+                                                              nested_u_map(32, 16), 100, 40);
 }

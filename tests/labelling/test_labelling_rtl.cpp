@@ -184,37 +184,17 @@ TEST_CASE("scw_labelling flags broken frames like the model, the next frame corr
           "[labelling][rtl]") {
   const auto cfg = grid_config(32, 24, 2, 2, 0, 1);
   const DispMap good = nested_u_map(32, 24);
-  const auto whole = map_beats({good});
-  auto check = [&](const std::vector<InBeat>& beats, std::size_t frames_n) {
-    std::vector<TwinRun> runs;
+  for (const auto& s : broken_streams<InBeat>(good, 100, 40)) {
     for (const auto& pattern : StallPattern::all(3)) {
-      INFO("stalls " << pattern.name());
-      auto r = run_twins<Vlabelling_a, ParamsA>(beats, frames_n, cfg, pattern);
+      INFO(s.name << ", stalls " << pattern.name());
+      auto r = run_twins<Vlabelling_a, ParamsA>(s.beats, 2, cfg, pattern);
       CHECK(r.err_cpp);
       CHECK(r.err_rtl);
-      REQUIRE(r.frames.size() == frames_n);
+      REQUIRE(r.frames.size() == 2);
       CHECK(r.frames[0].status.stream_error);
+      if (s.first_whole)  // flagged on the frame they precede
+        CHECK(raster_sorted(r.frames[0].objects) == raster_sorted(r.frames[1].objects));
       check_against_reference({r.frames.back()}, {good}, cfg);
-      runs.push_back(std::move(r));
     }
-    return runs;
-  };
-  SECTION("a frame cut short by the next sof") {
-    std::vector<InBeat> beats(whole.begin(), whole.begin() + 100);
-    beats.insert(beats.end(), whole.begin(), whole.end());
-    check(beats, 2);
-  }
-  SECTION("beats before the first sof") {
-    std::vector<InBeat> beats(whole.begin() + 5, whole.begin() + 9);
-    beats.insert(beats.end(), whole.begin(), whole.end());
-    beats.insert(beats.end(), whole.begin(), whole.end());
-    for (const auto& r : check(beats, 2))  // flagged on the frame they precede
-      CHECK(raster_sorted(r.frames[0].objects) == raster_sorted(r.frames[1].objects));
-  }
-  SECTION("a row with a misplaced eol") {
-    auto beats = whole;
-    beats[40].eol = true;
-    beats.insert(beats.end(), whole.begin(), whole.end());
-    check(beats, 2);
   }
 }
