@@ -14,13 +14,16 @@ namespace scw::sim {
 
 /// `VM` is a Verilated scw_labelling module class (its /*verilator public*/ parameters are
 /// static constexpr members); `Params` an hls::labelling::LabellingParams. The edge queue's
-/// depth sets when the stage takes input, so it must be the model's too.
+/// depth, the lanes' FIFOs and the Init phase's length set when the stage takes input, so they
+/// must be the model's too.
 template <typename VM, typename Params>
 constexpr bool labelling_params_match() {
   return VM::MaxWidthPx == Params::kMaxWidthPx && VM::MaxHeight == Params::kMaxHeight &&
          VM::MaxTilesX == Params::kMaxTilesX && VM::MaxTilesY == Params::kMaxTilesY &&
          VM::LabelsPerTile == Params::kLabelsPerTile && VM::MaxObjects == Params::kMaxObjects &&
-         VM::Nodes == Params::kNodes && VM::EdgeQueue == hls::labelling::kEdgeQueue;
+         VM::Lanes == Params::kLanes && VM::LaneFifo == Params::kLaneFifo &&
+         VM::Nodes == Params::kNodes && VM::EdgeQueue == hls::labelling::kEdgeQueue &&
+         VM::InitClocks == hls::labelling::Labelling<Params>::kInitClocks;
 }
 
 /// `VM` is a Verilated scw_labelling built with `Params` (check with labelling_params_match).

@@ -14,8 +14,6 @@
 
 #include "hls/pipeline/pipeline_params.hpp"
 #include "hls/pipeline/pipeline_result.hpp"
-#include "sim/beat_split_model.hpp"
-#include "sim/beat_split_rtl.hpp"
 #include "sim/components.hpp"
 #include "sim/disparity_model.hpp"
 #include "sim/disparity_rtl.hpp"
@@ -45,20 +43,19 @@ namespace scw::sim {
 /// static_asserts each one's parameters (the V<prefix>_<module> class) against the build's,
 /// with the *_params_match functions, as every Verilated model in the project is checked.
 /// `Ground` is the optional ground filter, which the scw_pipeline top does not have.
-template <typename Check, typename MapGrid, typename Rectify, typename Disparity, typename Split,
+template <typename Check, typename MapGrid, typename Rectify, typename Disparity,
           typename Labelling, typename Warning, typename Merge, typename Ground = void>
 struct PipelineRtl {
   using check = Check;
   using map_grid = MapGrid;
   using rectify = Rectify;
   using disparity = Disparity;
-  using split = Split;
   using labelling = Labelling;
   using warning = Warning;
   using merge = Merge;
   using ground = Ground;
 };
-using NoRtl = PipelineRtl<void, void, void, void, void, void, void, void>;
+using NoRtl = PipelineRtl<void, void, void, void, void, void, void>;
 
 /// The pipeline on the simulator's clock. Cycle 0 is the first cycle after the knots are
 /// loaded (both cameras, one knot per cycle, left first, as scw_pipeline's knot port takes
@@ -105,17 +102,13 @@ class PipelineChain {
     add_rectify("rectify_left", engines.rectify, chk_l, map_l, *rect_l_);
     add_rectify("rectify_right", engines.rectify, chk_r, map_r, *rect_r_);
     add_disparity(engines.disparity);
-    if constexpr (P > 1) {
-      split_ = &sim_.fifo<label_beat>("split", d.disp);
-      add_split(engines.split);
-      label_in_ = split_;
-    } else {
-      label_in_ = disp_;
-    }
-    if (s.ground) {
-      auto& filtered = sim_.fifo<label_beat>("ground", d.disp);
-      add_ground(engines.ground, *label_in_, filtered);
-      label_in_ = &filtered;
+    label_in_ = disp_;  // the labelling stage takes the disparity beats whole, a lane a pixel
+    if constexpr (P == 1) {
+      if (s.ground) {
+        auto& filtered = sim_.fifo<label_beat>("ground", d.disp);
+        add_ground(engines.ground, *label_in_, filtered);
+        label_in_ = &filtered;
+      }
     }
     add_labelling(engines.labelling, *label_in_);
     add_warning(engines.warning, res);
@@ -168,8 +161,8 @@ class PipelineChain {
   Fifo<raw_beat>& rect_left() { return *rect_l_; }
   Fifo<raw_beat>& rect_right() { return *rect_r_; }
   Fifo<disp_beat>& disparity() { return *disp_; }
-  /// What the labelling stage takes: the disparity, split to one pixel per beat and with the
-  /// road removed when the setup has a ground filter.
+  /// What the labelling stage takes: the disparity, with the road removed when the setup has a
+  /// ground filter.
   Fifo<label_beat>& labelling_input() { return *label_in_; }
   Fifo<hls::labelling::LabelPacket>& objects() { return *objects_; }
   Fifo<Result>& result_fifo() { return *out_; }
@@ -269,22 +262,6 @@ class PipelineChain {
     }
   }
 
-  void add_split(Engine e) {
-    using T = hls::disparity::disp_t;
-    if (e == Engine::cpp) {
-      sim_.add<StreamComponent<BeatSplitModel<T, P>>>("split", BeatSplitModel<T, P>(), *disp_,
-                                                      *split_);
-      return;
-    }
-    using VM = typename Rtl::split;
-    if constexpr (kBuilt<VM>) {
-      sim_.add<StreamComponent<BeatSplitRtl<VM, T, P>>>("split", BeatSplitRtl<VM, T, P>("split"),
-                                                        *disp_, *split_);
-    } else {
-      not_built("beat split");
-    }
-  }
-
   void add_ground(Engine e, Fifo<label_beat>& in, Fifo<label_beat>& out) {
     using Params = typename Build::ground;
     static_assert(std::is_same_v<typename Params::in_beat, label_beat>,
@@ -361,7 +338,6 @@ class PipelineChain {
   Fifo<raw_beat>* rect_l_ = nullptr;
   Fifo<raw_beat>* rect_r_ = nullptr;
   Fifo<disp_beat>* disp_ = nullptr;
-  Fifo<label_beat>* split_ = nullptr;
   Fifo<label_beat>* label_in_ = nullptr;
   Fifo<hls::labelling::LabelPacket>* objects_ = nullptr;
   Fifo<Result>* out_ = nullptr;

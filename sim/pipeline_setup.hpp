@@ -25,23 +25,21 @@ struct PipelineEngines {
   Engine map_grid = Engine::cpp;
   Engine rectify = Engine::cpp;
   Engine disparity = Engine::cpp;
-  Engine split = Engine::cpp;
   Engine labelling = Engine::cpp;
   Engine warning = Engine::cpp;
   Engine merge = Engine::cpp;
   Engine ground = Engine::cpp;  // when the setup has a ground filter
 
-  static PipelineEngines all(Engine e) { return {e, e, e, e, e, e, e, e, e}; }
+  static PipelineEngines all(Engine e) { return {e, e, e, e, e, e, e, e}; }
 };
 
 /// Depths of the links (scw_pipeline's *FifoDepth parameters; the defaults are the top's).
-/// The stages take one beat per clock, so two to four places suffice; a deeper disparity link
-/// does not shorten the period (the labelling stage still takes one pixel per clock).
+/// The stages take one beat per clock, so two to four places suffice.
 struct PipelineDepths {
   int raw = 2;   // input and checked pixels, per camera
   int map = 4;   // map-grid expander to rectifier
   int rect = 4;  // rectifier to disparity
-  int disp = 4;  // disparity to labelling (and the split link)
+  int disp = 4;  // disparity to labelling (and the ground filter's link)
   int obj = 2;   // object words
   int res = 2;   // frame results and pipeline results
   int flag = 4;  // per-frame input flags: frames in flight between input and result
@@ -54,8 +52,8 @@ struct PipelineSetup {
   hls::disparity::DisparityConfig disparity;  // width and height are taken from above
   hls::labelling::LabellingConfig labelling;  // width and height are taken from above
   hls::warning::WarningConfig warning;
-  /// Ground removal (thesis 6.2) between the disparity stage (after the beat split) and the
-  /// labelling stage; absent: no filter, the graph of scw_pipeline.
+  /// Ground removal (thesis 6.2) between the disparity and labelling stages, at one pixel per
+  /// beat only; absent: no filter, the graph of scw_pipeline.
   std::optional<hls::ground::GroundConfig> ground;
   int knot_cols = 0, knot_rows = 0;  // each camera's knot grid, row-major
   std::vector<hls::rectify::KnotPoint> left_knots, right_knots;
@@ -115,7 +113,12 @@ void check_setup(const PipelineSetup& s) {
   if (s.height < Build::kWindow || s.width < Build::kWindow)
     fail("the frame is smaller than the " + std::to_string(Build::kWindow) + " x " +
          std::to_string(Build::kWindow) + " window");
-  if (s.ground) hls::ground::check_config(*s.ground);
+  if (s.ground) {
+    if (Build::kPpc != 1)
+      fail("the ground filter takes one pixel per beat: run it at --ppc 1, or without ground "
+           "removal");
+    hls::ground::check_config(*s.ground);
+  }
   const PipelineDepths& q = s.depths;
   for (int depth : {q.raw, q.map, q.rect, q.disp, q.obj, q.res, q.flag})
     if (depth < 1) fail("every FIFO depth must be at least 1");

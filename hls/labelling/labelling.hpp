@@ -83,9 +83,9 @@ class Labelling {
   static constexpr int kNodes = Params::kNodes;
   static constexpr int kTiles = TX * TY;
   /// Clocks of kInit: the parent RAM, a bank per lane cleared side by side, and with lanes the
-  /// border RAMs (a row per clock).
+  /// border RAMs (a row per clock) and the strips' measure (a tile column per clock).
   static constexpr int kInitClocks =
-      N == 1 ? kNodes : (kNodes / N > Params::kMaxHeight ? kNodes / N : Params::kMaxHeight);
+      N == 1 ? kNodes : std::max({kNodes / N, Params::kMaxHeight, Params::kMaxTilesX});
   /// The border sweep's queue: it reads a row while it has room for two rows' edges.
   static constexpr int kBorderQueue = 8;
   using in_type = typename Params::in_beat;

@@ -34,11 +34,12 @@ struct PipelineParams {
   using rectify = ::scw::hls::rectify::RectifyParams<P, MaxWidthPx, MaxHeight, RectRows>;
   using map_grid = ::scw::hls::rectify::MapGridParams<P, MaxWidthPx, MaxHeight, GridLog2>;
   using disparity = ::scw::hls::disparity::DisparityParams<P, MaxWidthPx, Window, NumDisp, MaxHeight>;
-  using labelling = ::scw::hls::labelling::LabellingParams<MaxWidthPx, MaxHeight, MaxTilesX, MaxTilesY,
-                                               LabelsPerTile, MaxObjects>;
+  /// P lanes: the disparity beats go in whole, each lane labelling a strip of tile columns.
+  using labelling = ::scw::hls::labelling::LabellingParams<MaxWidthPx, MaxHeight, MaxTilesX,
+                                                           MaxTilesY, LabelsPerTile, MaxObjects, P>;
   using warning = ::scw::hls::warning::WarningParams<MaxDisparityPx>;
-  /// The optional ground-removal filter (thesis 6.2) between the beat split and labelling:
-  /// one pixel per beat, like the labelling stage.
+  /// The optional ground-removal filter (thesis 6.2) between disparity and labelling: one pixel
+  /// per beat, so only at P = 1.
   using ground = ::scw::hls::ground::GroundParams<MaxWidthPx>;
 };
 
@@ -50,9 +51,10 @@ using ThesisPipeline = PipelineParams<P, 1280, 480, 64, 4, 21, 45, 8, 4, 256, 25
 
 /// A small build for tests and CI (RTL compiles and runs in seconds): up to 128 x 96 (a crop
 /// of the Tsukuba pair fits, disparities 0 .. 15), window 9, 16 candidates, 16 raw rows, knots
-/// every 8 px, 2 x 2 tiles of 256 labels, 64 objects, codes below 32 px.
+/// every 8 px, up to 4 x 2 tiles of 256 labels (4 tile columns for 4 lanes), 64 objects, codes
+/// below 32 px.
 template <int P>
-using SmallPipeline = PipelineParams<P, 128, 96, 16, 3, 9, 16, 2, 2, 256, 64, 32>;
+using SmallPipeline = PipelineParams<P, 128, 96, 16, 3, 9, 16, 4, 2, 256, 64, 32>;
 
 /// Tsukuba-sized (384 x 288), window 9, 16 candidates (0 .. 15): the bundled real pair.
 using TsukubaPipeline = PipelineParams<1, 384, 288, 16, 4, 9, 16, 4, 4, 256, 64, 32>;

@@ -76,14 +76,13 @@ sim::PipelineEngines engines_of(const Options& o, const sim::PipelineEngines& bu
                         : b == "map_grid"  ? &e.map_grid
                         : b == "rectify"   ? &e.rectify
                         : b == "disparity" ? &e.disparity
-                        : b == "split"     ? &e.split
                         : b == "labelling" ? &e.labelling
                         : b == "warning"   ? &e.warning
                         : b == "merge"     ? &e.merge
                                            : nullptr;
     if (slot == nullptr)
       throw std::invalid_argument("--rtl-stages: no block '" + b +
-                                  "' (check, map_grid, rectify, disparity, split, labelling, "
+                                  "' (check, map_grid, rectify, disparity, labelling, "
                                   "warning, merge)");
     *slot = sim::Engine::rtl;
   }
@@ -286,7 +285,7 @@ int run_small(const Options& o) {
     // At P = 2 the small build verilates only the blocks that differ from P = 1 in more than
     // width (tests/pipeline compare its whole top); the rest run as C++ here.
     if (P == 2 && o.engine == "rtl")
-      std::cerr << "small build, P = 2: Verilated beat split, labelling, warning and merge; "
+      std::cerr << "small build, P = 2: Verilated labelling, warning and merge; "
                    "the other blocks run as C++ (docs/pipeline.md)\n";
     return run<Build, typename sim::small_build::Rtl<P>::type>(
         o, Build::kMaxWidthPx, Build::kMaxHeight, 0, 16, sim::small_build::rtl_engines<P>());
@@ -302,6 +301,9 @@ int run_thesis(const Options& o) {
   if constexpr (P == 1) return run<Build, sim::thesis_build::Rtl<1>::type>(o, 1280, 480, 20, 45);
 #if SCW_THESIS_RTL_P2
   if constexpr (P == 2) return run<Build, sim::thesis_build::Rtl<2>::type>(o, 1280, 480, 20, 45);
+#endif
+#if SCW_THESIS_RTL_P4
+  if constexpr (P == 4) return run<Build, sim::thesis_build::Rtl<4>::type>(o, 1280, 480, 20, 45);
 #endif
 #endif
   return run<Build, sim::NoRtl>(o, 1280, 480, 20, 45);

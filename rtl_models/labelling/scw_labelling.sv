@@ -4,13 +4,18 @@
 
 // The C++ twin is scw::hls::labelling::Labelling (hls/labelling/labelling.hpp) clocked by
 // scw::sim::LabellingModel, clock for clock: same in_ready, out_valid and out data every cycle.
-// The rules, the join and the descriptor are in docs/labelling.md. Phases:
-//   Init     after reset: clear the parent RAM, one node per clock
-//   Frame    S0 takes a pixel and reads the row buffer; S1 decides its node (a tile's label
-//            table: node = tile * LabelsPerTile + label) and queues edges to other nodes; S2
-//            adds the pixel to its node's descriptor; the merge unit (union-find) runs alongside
-//   Drain    after the frame's last pixel or a sof in mid-frame: wait for S1, S2, the edge queue
-//            and the merge unit
+// The rules, the join and the descriptor are in docs/labelling.md. A beat carries Lanes pixels;
+// lane i (scw_labelling_lane) labels the i-th of Lanes vertical strips of whole tile columns,
+// one pixel per clock. Phases:
+//   Init     after reset: clear the parent RAM (a bank per lane side by side), with lanes also
+//            the strip-border RAMs, and measure the strips (tile_w x tile columns / Lanes)
+//   Frame    one lane: S0 takes the pixel, S1 decides its node (a tile's label table: node =
+//            tile * LabelsPerTile + label) and queues edges, S2 adds it to its node's
+//            descriptor, the merge unit (union-find) runs alongside. Lanes: a beat goes whole into
+//            the FIFO of the lane whose strip it is in; every lane does the same on its strip
+//   Drain    after the frame's last beat or a sof in mid-frame: wait for the lanes
+//   Border   (lanes only) every row: the two pixels either side of each strip border that join
+//            queue an edge for a merge unit over the whole node space
 //   Resolve  every used node in ascending order (R0 .. R3): its root (parents point to smaller
 //            nodes, so the parent's root is already known) and its descriptor into the root's
 //   Emit     every used node again (E0, E1): roots of at least cfg_min_area_i pixels leave as
@@ -28,6 +33,7 @@ module scw_labelling #(
   parameter int unsigned MaxTilesY     /*verilator public*/ = 2,
   parameter int unsigned LabelsPerTile /*verilator public*/ = 16,
   parameter int unsigned MaxObjects    /*verilator public*/ = 16,
+  parameter int unsigned Lanes         /*verilator public*/ = 1,
   localparam int unsigned OutW = 1 + 32 + 10 * 16 + 9 * 64  // sim/labelling_pack.hpp
 ) (
   input  logic            clk_i,
@@ -42,7 +48,7 @@ module scw_labelling #(
   // disparities, Q11.4
   input  logic            in_valid_i,
   output logic            in_ready_o,
-  input  logic [15:0]     in_data_i,
+  input  logic [16*Lanes-1:0] in_data_i,  // pixel k at [16 k +: 16]
   input  logic            in_sof_i,
   input  logic            in_eol_i,
   // objects, then the frame's status word with last
@@ -54,24 +60,37 @@ module scw_labelling #(
 );
   localparam int unsigned Tiles = MaxTilesX * MaxTilesY;
   localparam int unsigned Nodes /*verilator public*/ = Tiles * LabelsPerTile;
-  // hls::labelling::kEdgeQueue: the input is taken while at most EdgeQueue - 4 edges are queued
+  // hls::labelling::kEdgeQueue: a lane takes a pixel while at most EdgeQueue - 4 edges are queued
   // (two from the pixel in decision, two from the pixel being taken).
   localparam int unsigned EdgeQueue /*verilator public*/ = 8;
+  // LabellingParams::kLaneFifo: beats each lane's FIFO holds (lanes only).
+  localparam int unsigned LaneWidthPx = MaxWidthPx / Lanes;
+  localparam int unsigned LaneFifo /*verilator public*/ =
+      (LaneWidthPx / Lanes > 2) ? LaneWidthPx / Lanes : 2;
+  localparam int unsigned LaneNodes = Nodes / Lanes;
+  // Labelling::kInitClocks: the parent banks side by side; with lanes also the border RAMs (a row
+  // per clock) and the strip measure (a tile column per clock).
+  localparam int unsigned InitMax = (LaneNodes > MaxHeight) ? LaneNodes : MaxHeight;
+  localparam int unsigned InitClocks /*verilator public*/ =
+      (Lanes == 1) ? Nodes : (InitMax > MaxTilesX ? InitMax : MaxTilesX);
+  // Labelling::kBorderQueue: the border sweep reads a row while two rows' edges fit.
+  localparam int unsigned BorderQueue = 8;
   localparam int unsigned DescW  = OutW - 1;
   localparam int unsigned XW     = $clog2(MaxWidthPx);       // 0 .. MaxWidthPx - 1
   localparam int unsigned YW     = $clog2(MaxHeight + 1);    // 0 .. MaxHeight
-  localparam int unsigned TXW    = (MaxTilesX > 1) ? $clog2(MaxTilesX) : 1;
-  localparam int unsigned TYW    = $clog2(MaxTilesY + 1);
+  localparam int unsigned HW     = (MaxHeight > 1) ? $clog2(MaxHeight) : 1;  // a border row
   localparam int unsigned TileW  = (Tiles > 1) ? $clog2(Tiles) : 1;
   localparam int unsigned LabW   = (LabelsPerTile > 1) ? $clog2(LabelsPerTile) : 1;
   localparam int unsigned CntW   = $clog2(LabelsPerTile + 1);
   localparam int unsigned NodeW  = (Nodes > 1) ? $clog2(Nodes) : 1;
   localparam int unsigned N1W    = $clog2(Nodes + 1);         // node + 1, 0 = none
+  localparam int unsigned LNodeW = (LaneNodes > 1) ? $clog2(LaneNodes) : 1;
   localparam int unsigned ObjW   = $clog2(MaxObjects + 1);
-  localparam int unsigned QCntW  = $clog2(EdgeQueue + 1);
-  localparam int unsigned RowW   = 16 + N1W;                  // row buffer word {node + 1, d}
-  localparam logic [N1W-1:0] LabelsN1  = N1W'(LabelsPerTile);
-  localparam logic [TileW-1:0] TilesXT = TileW'(MaxTilesX);
+  localparam int unsigned InitW  = (InitClocks > 1) ? $clog2(InitClocks) : 1;
+  localparam int unsigned LaneSW = (Lanes > 1) ? $clog2(Lanes) : 1;  // a lane number
+  localparam int unsigned BordW  = N1W + 16;                 // border word {node + 1, d}
+  localparam logic [N1W-1:0] LabelsN1 = N1W'(LabelsPerTile);
+  localparam logic [16:0] Ppb = 17'(Lanes);                   // pixels per beat
 
   if (MaxWidthPx < 2 || MaxHeight < 1 || MaxWidthPx > 65535 || MaxHeight > 65535)
   begin : gen_bad_size
@@ -80,58 +99,35 @@ module scw_labelling #(
   if (MaxTilesX < 1 || MaxTilesY < 1 || LabelsPerTile < 1 || MaxObjects < 1) begin : gen_bad_cap
     $error("scw_labelling: capacities are at least 1");
   end
+  if (!(Lanes == 1 || Lanes == 2 || Lanes == 4) || MaxTilesX % Lanes != 0 ||
+      MaxWidthPx % Lanes != 0) begin : gen_bad_lanes
+    $error("scw_labelling: 1, 2 or 4 lanes, over which the tile columns and width split evenly");
+  end
+  if (Lanes > 1 && ((MaxTilesX & (MaxTilesX - 1)) != 0 ||
+                    (LabelsPerTile & (LabelsPerTile - 1)) != 0)) begin : gen_bad_pow2
+    $error("scw_labelling: with lanes, MaxTilesX and LabelsPerTile are powers of two");
+  end
 
   // Descriptors (hls::labelling::Object) are scw_pkg::label_desc_t.
-  typedef enum logic [2:0] {PhInit, PhFrame, PhDrain, PhResolve, PhEmit} phase_e;
-
-  // The thesis's join: 10 |d_cur - d_nb| < d_cur, d_cur the later pixel in raster order.
-  function automatic logic joins(input logic [15:0] d_cur, input logic [15:0] d_nb);
-    logic [15:0] diff;
-    logic [19:0] ten;
-    diff  = (d_cur >= d_nb) ? d_cur - d_nb : d_nb - d_cur;
-    ten   = {1'b0, diff, 3'b000} + {3'b000, diff, 1'b0};
-    joins = ten < {4'b0000, d_cur};
-  endfunction
+  typedef enum logic [2:0] {PhInit, PhFrame, PhDrain, PhBorder, PhResolve, PhEmit} phase_e;
 
   // ---- registers ---------------------------------------------------------------------------
   phase_e phase_q, phase_d;
-  logic [NodeW-1:0] init_q, init_d;
-  // frame position and flags
+  logic [InitW-1:0] init_q;
+  // frame position (of the next beat) and flags
   logic in_frame_q, in_frame_d;
-  logic [XW-1:0] x_q, x_d, tcol_q, tcol_d;
-  logic [YW-1:0] y_q, y_d, trow_q, trow_d;
-  logic [TXW-1:0] tx_q, tx_d;
-  logic [TYW-1:0] ty_q, ty_d;
+  logic [XW-1:0] x_q, x_d, lane_col_q, lane_col_d;
+  logic [YW-1:0] y_q, y_d;
+  logic [LaneSW-1:0] lane_q, lane_d;
   logic err_pending_q, err_pending_d, err_frame_q, err_frame_d, err_sticky_q, err_sticky_d;
   logic tile_ovf_q, tile_ovf_d, obj_ovf_q, obj_ovf_d;
   logic [ObjW-1:0] emitted_q, emitted_d;
-  // S1: the pixel S0 took last clock
-  logic s1_valid_q, s1_valid_d;
-  logic [15:0] s1_d_q, s1_d_d;  // 0 when not an object pixel
-  logic [XW-1:0] s1_x_q, s1_x_d;
-  logic [YW-1:0] s1_y_q, s1_y_d;
-  logic [TileW-1:0] s1_tile_q, s1_tile_d;
-  logic s1_has_left_q, s1_has_left_d, s1_has_up_q, s1_has_up_d;
-  logic s1_left_same_q, s1_left_same_d, s1_up_same_q, s1_up_same_d;
-  // S2: the pixel S1 decided last clock
-  logic s2_valid_q, s2_valid_d, s2_init_q, s2_init_d;
-  logic [NodeW-1:0] s2_node_q, s2_node_d;
-  logic [XW-1:0] s2_x_q, s2_x_d;
-  logic [YW-1:0] s2_y_q, s2_y_d;
-  logic [15:0] s2_d_q, s2_d_d;
-  // the left neighbour and the edge queued last
-  logic [15:0] left_d_q, left_d_d;
-  logic [N1W-1:0] left1_q, left1_d;
-  logic has_last_q, has_last_d;
-  logic [NodeW-1:0] last_a_q, last_a_d, last_b_q, last_b_d;
-  // labels used per tile
-  logic [CntW-1:0] count_q [Tiles];
-  logic count_clear, count_inc;
-  // The descriptor written last clock (S2's into desc in Frame and Drain, R3's into acc in
-  // Resolve): the model's fwd_ and afwd_, never live in the same phase, so one register.
-  logic fwd_valid_q, fwd_valid_d;
-  logic [NodeW-1:0] fwd_node_q;
-  logic [DescW-1:0] fwd_value_q;
+  // the strips, measured in Init: every lane's but the last is strip_q pixels wide
+  logic [15:0] strip_q;
+  // R3's write into acc last clock
+  logic afwd_valid_q;
+  logic [NodeW-1:0] afwd_node_q;
+  logic [DescW-1:0] afwd_value_q;
   // R2's root written last clock
   logic rfwd_valid_q, rfwd_valid_d;
   logic [NodeW-1:0] rfwd_node_q, rfwd_root_q;
@@ -148,290 +144,405 @@ module scw_labelling #(
   logic out_valid_q, out_valid_d, out_load, out_last_q, out_last_d;
   logic [OutW-1:0] out_data_q, out_data_d;
 
-  // ---- RAM ports ---------------------------------------------------------------------------
-  logic row_re, row_we;
-  logic [XW-1:0] row_raddr, row_waddr;
-  logic [RowW-1:0] row_wdata, row_rd;
+  // ---- phases ------------------------------------------------------------------------------
+  logic ph_init, ph_frame, ph_pixels, ph_border, ph_resolve, ph_emit;
+  assign ph_init    = phase_q == PhInit;
+  assign ph_frame   = phase_q == PhFrame;
+  assign ph_pixels  = (phase_q == PhFrame) || (phase_q == PhDrain);
+  assign ph_border  = phase_q == PhBorder;
+  assign ph_resolve = phase_q == PhResolve;
+  assign ph_emit    = phase_q == PhEmit;
+  logic drained;
+
+  // ---- the stage's ports into the lanes' banks (Init, Border, Resolve) ---------------------
   logic par_re, par_we;
   logic [NodeW-1:0] par_raddr, par_waddr;
   logic [N1W-1:0] par_wdata, par_rd;
-  logic root_re, root_we;
-  logic [NodeW-1:0] root_raddr, root_waddr, root_wdata, root_rd;
-  logic desc_re, desc_we;
-  logic [NodeW-1:0] desc_raddr;
+  logic desc_re;
   logic [DescW-1:0] desc_rd;
-  logic acc_re, acc_we;
-  logic [NodeW-1:0] acc_raddr;
-  scw_pkg::label_desc_t acc_rd;
+  logic [CntW-1:0] sw_count;
+  logic frame_end;
+  // per lane, flattened: lane i at [i * W +: W]
+  logic [Lanes-1:0] lane_take, lane_can_take, lane_idle, lane_ovf, lane_left_we, lane_right_we;
+  logic [Lanes*16-1:0] lane_px;
+  logic [Lanes*YW-1:0] lane_brow;
+  logic [Lanes*BordW-1:0] lane_bword;
+  logic [Lanes*N1W-1:0] lane_par_rd;
+  logic [Lanes*DescW-1:0] lane_desc_rd;
+  logic [Lanes*CntW-1:0] lane_count;
+  logic [Lanes*16-1:0] lane_x0, lane_width;
 
-  // ---- phases ------------------------------------------------------------------------------
-  logic ph_frame, ph_pixels, ph_resolve, ph_emit;
-  assign ph_frame   = phase_q == PhFrame;
-  assign ph_pixels  = (phase_q == PhFrame) || (phase_q == PhDrain);
-  assign ph_resolve = phase_q == PhResolve;
-  assign ph_emit    = phase_q == PhEmit;
+  // ---- S0 of the stage: frame the beat, pass it to its lane --------------------------------
+  logic room, take, sof_mid, frame_start, beat_drop, beat_in, eol_err, frame_last;
+  logic [XW-1:0] xe, lane_cole;
+  logic [YW-1:0] ye;
+  logic [LaneSW-1:0] lanee;
+  logic [16:0] xn, lane_coln, y1;
+  logic x_wrap;
+  logic [Lanes-1:0] fifo_ready, fifo_valid;
 
-  // ---- merge unit and edge queue -----------------------------------------------------------
-  logic [QCntW-1:0] q_count;
-  logic [NodeW-1:0] q_head_a, q_head_b;
-  logic [1:0] push_n;
-  logic [NodeW-1:0] push0_a, push0_b, push1_a, push1_b;
-  logic q_nonempty;
-  logic uf_pop, uf_idle, uf_rd_en, uf_wr_en;
-  logic [NodeW-1:0] uf_rd_addr, uf_wr_addr;
-  logic [N1W-1:0] uf_wr_data;
-
-  // A named signal, not an expression, on the port: Yosys 0.23 re-elaborates a module with an
-  // expression on a port of a module it has not read yet, and loses a chparam'd top's name.
-  assign q_nonempty = q_count != '0;
-
-  scw_labelling_union_find #(.Nodes(Nodes)) u_union_find (
-    .clk_i,
-    .rst_ni,
-    .en_i        (ph_pixels),
-    .q_nonempty_i(q_nonempty),
-    .head_a_i    (q_head_a),
-    .head_b_i    (q_head_b),
-    .rd_data_i   (par_rd),
-    .pop_o       (uf_pop),
-    .idle_o      (uf_idle),
-    .rd_en_o     (uf_rd_en),
-    .rd_addr_o   (uf_rd_addr),
-    .wr_en_o     (uf_wr_en),
-    .wr_addr_o   (uf_wr_addr),
-    .wr_data_o   (uf_wr_data)
-  );
-
-  scw_labelling_edge_queue #(.Depth(EdgeQueue), .NodeW(NodeW)) u_edge_queue (
-    .clk_i,
-    .rst_ni,
-    .pop_i    (uf_pop),
-    .push_n_i (push_n),
-    .push0_a_i(push0_a),
-    .push0_b_i(push0_b),
-    .push1_a_i(push1_a),
-    .push1_b_i(push1_b),
-    .count_o  (q_count),
-    .head_a_o (q_head_a),
-    .head_b_o (q_head_b)
-  );
-
-  // ---- S0: take a beat, read the row buffer ------------------------------------------------
-  logic take, sof_mid, frame_start, beat_drop, beat_in, eol_err, frame_last;
-  logic [XW-1:0] xe, tcole;
-  logic [YW-1:0] ye, trowe;
-  logic [TXW-1:0] txe;
-  logic [TYW-1:0] tye;
-  logic [16:0] x1, tcol1, y1, trow1;
-  logic x_wrap, tcol_wrap, trow_wrap, px_valid;
-
-  assign in_ready_o  = ph_frame && (q_count <= QCntW'(EdgeQueue - 4)) && !(in_frame_q && in_sof_i);
+  assign room        = (Lanes == 1) ? lane_can_take[0] : fifo_ready[in_frame_q ? lane_q : '0];
+  assign in_ready_o  = ph_frame && room && !(in_frame_q && in_sof_i);
   assign take        = in_valid_i && in_ready_o;
   assign sof_mid     = ph_frame && in_frame_q && in_valid_i && in_sof_i;
   assign frame_start = take && !in_frame_q && in_sof_i;
   assign beat_drop   = take && !in_frame_q && !in_sof_i;  // outside any frame
-  assign beat_in     = take && (in_frame_q || in_sof_i);  // a pixel of the frame
+  assign beat_in     = take && (in_frame_q || in_sof_i);  // a beat of the frame
 
-  // The taken pixel's position: a sof restarts the counters.
-  assign xe    = frame_start ? '0 : x_q;
-  assign ye    = frame_start ? '0 : y_q;
-  assign txe   = frame_start ? '0 : tx_q;
-  assign tye   = frame_start ? '0 : ty_q;
-  assign tcole = frame_start ? '0 : tcol_q;
-  assign trowe = frame_start ? '0 : trow_q;
-
-  assign x1         = 17'(xe) + 17'd1;
-  assign tcol1      = 17'(tcole) + 17'd1;
-  assign y1         = 17'(ye) + 17'd1;
-  assign trow1      = 17'(trowe) + 17'd1;
-  assign x_wrap     = x1 == {1'b0, cfg_width_i};
-  assign tcol_wrap  = tcol1 == {1'b0, cfg_tile_w_i};
-  assign trow_wrap  = trow1 == {1'b0, cfg_tile_h_i};
+  // The beat's position: a sof restarts the counters.
+  assign xe        = frame_start ? '0 : x_q;
+  assign ye        = frame_start ? '0 : y_q;
+  assign lanee     = frame_start ? '0 : lane_q;
+  assign lane_cole = frame_start ? '0 : lane_col_q;
+  assign xn        = 17'(xe) + Ppb;
+  assign lane_coln = 17'(lane_cole) + Ppb;
+  assign y1        = 17'(ye) + 17'd1;
+  assign x_wrap     = xn == {1'b0, cfg_width_i};
   assign frame_last = beat_in && x_wrap && (y1 == {1'b0, cfg_height_i});
   assign eol_err    = beat_in && (in_eol_i != x_wrap);
-  assign px_valid   = (in_data_i != 16'd0) && !in_data_i[15] && (in_data_i > cfg_floor_i);
 
   always_comb begin
-    x_d    = x_q;
-    y_d    = y_q;
-    tx_d   = tx_q;
-    ty_d   = ty_q;
-    tcol_d = tcol_q;
-    trow_d = trow_q;
+    x_d        = x_q;
+    y_d        = y_q;
+    lane_d     = lane_q;
+    lane_col_d = lane_col_q;
     if (beat_in) begin
       if (x_wrap) begin
-        x_d    = '0;
-        tcol_d = '0;
-        tx_d   = '0;
-        y_d    = YW'(y1);
-        trow_d = trow_wrap ? '0 : YW'(trow1);
-        ty_d   = trow_wrap ? tye + 1'b1 : tye;
+        x_d        = '0;
+        y_d        = YW'(y1);
+        lane_d     = '0;
+        lane_col_d = '0;
       end else begin
-        x_d    = XW'(x1);
-        tcol_d = tcol_wrap ? '0 : XW'(tcol1);
-        tx_d   = tcol_wrap ? txe + 1'b1 : txe;
-        y_d    = ye;
-        trow_d = trowe;
-        ty_d   = tye;
+        x_d = XW'(xn);
+        y_d = ye;
+        if (lane_coln == {1'b0, strip_q}) begin
+          lane_d     = lanee + 1'b1;
+          lane_col_d = '0;
+        end else begin
+          lane_d     = lanee;
+          lane_col_d = XW'(lane_coln);
+        end
       end
     end
   end
 
-  assign s1_valid_d     = beat_in;
-  assign s1_d_d         = px_valid ? in_data_i : 16'd0;
-  assign s1_x_d         = xe;
-  assign s1_y_d         = ye;
-  assign s1_tile_d      = TileW'(tye) * TilesXT + TileW'(txe);
-  assign s1_has_left_d  = xe != '0;
-  assign s1_has_up_d    = ye != '0;
-  assign s1_left_same_d = tcole != '0;
-  assign s1_up_same_d   = trowe != '0;
+  // ---- the lanes, and with lanes their FIFOs -------------------------------------------------
+  if (Lanes == 1) begin : gen_one_lane
+    assign lane_take     = beat_in;
+    assign lane_px       = in_data_i;
+    assign lane_x0       = '0;
+    assign lane_width    = cfg_width_i;
+    assign fifo_ready    = 1'b0;
+    assign fifo_valid    = 1'b0;
+    assign strip_q       = cfg_width_i;
+    logic unused_border;  // one strip: no borders
+    assign unused_border = ^{lane_left_we, lane_right_we, lane_brow, lane_bword};
+  end else begin : gen_fifos
+    for (genvar i = 0; i < Lanes; i++) begin : gen_fifo
+      logic f_valid, f_pop;
+      logic [16*Lanes-1:0] f_data;
+      logic [LaneSW-1:0] sub_q;
+      logic f_push;
 
-  assign row_re    = beat_in;
-  assign row_raddr = xe;
+      assign fifo_valid[i] = f_valid;
+      assign f_push       = beat_in && (lanee == LaneSW'(i));
+      assign lane_take[i] = ph_pixels && f_valid && lane_can_take[i];
+      assign f_pop        = lane_take[i] && (sub_q == LaneSW'(Lanes - 1));
+      assign lane_px[i*16 +: 16] = f_data[sub_q*16 +: 16];
+      assign lane_x0[i*16 +: 16]    = 16'(i) * strip_q;
+      assign lane_width[i*16 +: 16] = (i + 1 < Lanes) ? strip_q
+                                    : cfg_width_i - 16'(Lanes - 1) * strip_q;
 
-  // ---- S1: decide the pixel's node, queue its edges ----------------------------------------
-  logic [15:0] up_d;
-  logic [N1W-1:0] up1, node1;
-  logic [CntW-1:0] s1_count;
-  logic s1_px, jl, ju, alloc, s1_ovf;
-  logic want0, want1, push0, push1, has0;
-  logic [NodeW-1:0] e0_a, e1_a, e_b, last0_a, last0_b;
+      /* verilator lint_off PINCONNECTEMPTY */
+      scw_fifo #(.Width(16 * Lanes), .Depth(LaneFifo)) u_fifo (
+        .clk_i,
+        .rst_ni,
+        .in_valid_i (f_push),
+        .in_ready_o (fifo_ready[i]),
+        .in_data_i  (in_data_i),
+        .out_valid_o(f_valid),
+        .out_ready_i(f_pop),
+        .out_data_o (f_data),
+        .count_o    ()
+      );
+      /* verilator lint_on PINCONNECTEMPTY */
 
-  assign up_d     = row_rd[15:0];
-  assign up1      = row_rd[RowW-1:16];
-  assign s1_count = count_q[s1_tile_q];
-  assign s1_px    = s1_valid_q && (s1_d_q != 16'd0);
-  assign jl       = s1_px && s1_has_left_q && (left1_q != '0) && joins(s1_d_q, left_d_q);
-  assign ju       = s1_px && s1_has_up_q && (up1 != '0) && joins(s1_d_q, up_d);
-
-  always_comb begin
-    node1  = '0;
-    alloc  = 1'b0;
-    s1_ovf = 1'b0;
-    if (!s1_px) begin
-      node1 = '0;
-    end else if (jl && s1_left_same_q) begin
-      node1 = left1_q;
-    end else if (ju && s1_up_same_q) begin
-      node1 = up1;
-    end else if (s1_count < CntW'(LabelsPerTile)) begin
-      node1 = N1W'(s1_tile_q) * LabelsN1 + N1W'(s1_count) + 1'b1;
-      alloc = 1'b1;
-    end else begin
-      s1_ovf = 1'b1;
+      // The pixel of the FIFO's head the lane takes next.
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          sub_q <= '0;
+        end else if (lane_take[i]) begin
+          sub_q <= sub_q + 1'b1;
+        end
+      end
     end
   end
 
-  // Edges {from, node}: an edge equal to the one queued just before is dropped.
-  assign e0_a    = NodeW'(left1_q - 1'b1);
-  assign e1_a    = NodeW'(up1 - 1'b1);
-  assign e_b     = NodeW'(node1 - 1'b1);
-  assign want0   = jl && (left1_q != node1) && (node1 != '0);
-  assign want1   = ju && (up1 != node1) && (node1 != '0);
-  assign push0   = want0 && !(has_last_q && e0_a == last_a_q && e_b == last_b_q);
-  assign has0    = has_last_q || push0;
-  assign last0_a = push0 ? e0_a : last_a_q;
-  assign last0_b = push0 ? e_b : last_b_q;
-  assign push1   = want1 && !(has0 && e1_a == last0_a && e_b == last0_b);
-  assign push_n  = {1'b0, push0} + {1'b0, push1};
-  assign push0_a = push0 ? e0_a : e1_a;
-  assign push0_b = e_b;
-  assign push1_a = e1_a;
-  assign push1_b = e_b;
+  for (genvar i = 0; i < Lanes; i++) begin : gen_lane
+    scw_labelling_lane #(
+      .MaxWidthPx   (MaxWidthPx),
+      .MaxHeight    (MaxHeight),
+      .MaxTilesX    (MaxTilesX),
+      .MaxTilesY    (MaxTilesY),
+      .LabelsPerTile(LabelsPerTile),
+      .Lanes        (Lanes),
+      .Lane         (i),
+      .EdgeQueue    (EdgeQueue)
+    ) u_lane (
+      .clk_i,
+      .rst_ni,
+      .cfg_tile_w_i,
+      .cfg_tile_h_i,
+      .cfg_floor_i,
+      .x0_i         (lane_x0[i*16 +: 16]),
+      .width_i      (lane_width[i*16 +: 16]),
+      .en_i         (ph_pixels),
+      .frame_end_i  (frame_end),
+      .take_i       (lane_take[i]),
+      .d_i          (lane_px[i*16 +: 16]),
+      .can_take_o   (lane_can_take[i]),
+      .idle_o       (lane_idle[i]),
+      .ovf_o        (lane_ovf[i]),
+      .left_we_o    (lane_left_we[i]),
+      .right_we_o   (lane_right_we[i]),
+      .border_row_o (lane_brow[i*YW +: YW]),
+      .border_word_o(lane_bword[i*BordW +: BordW]),
+      .init_i       (ph_init && (32'(init_q) < 32'(LaneNodes))),
+      .init_addr_i  (LNodeW'(init_q)),
+      .par_re_i     (par_re),
+      .par_raddr_i  (par_raddr),
+      .par_we_i     (par_we),
+      .par_waddr_i  (par_waddr),
+      .par_wdata_i  (par_wdata),
+      .par_rd_o     (lane_par_rd[i*N1W +: N1W]),
+      .desc_re_i    (desc_re),
+      .desc_raddr_i (r2_node_q),
+      .desc_rd_o    (lane_desc_rd[i*DescW +: DescW]),
+      .count_tile_i (sweep_tile_q),
+      .count_o      (lane_count[i*CntW +: CntW])
+    );
+  end
 
+  // Only the lane whose node or tile it is answers; the others give 0.
   always_comb begin
-    has_last_d = has_last_q;
-    last_a_d   = last_a_q;
-    last_b_d   = last_b_q;
-    if (push1) begin
-      has_last_d = 1'b1;
-      last_a_d   = e1_a;
-      last_b_d   = e_b;
-    end else if (push0) begin
-      has_last_d = 1'b1;
-      last_a_d   = e0_a;
-      last_b_d   = e_b;
+    par_rd   = '0;
+    desc_rd  = '0;
+    sw_count = '0;
+    for (int i = 0; i < Lanes; i++) begin
+      par_rd   = par_rd | lane_par_rd[i*N1W +: N1W];
+      desc_rd  = desc_rd | lane_desc_rd[i*DescW +: DescW];
+      sw_count = sw_count | lane_count[i*CntW +: CntW];
     end
-    if (count_clear) has_last_d = 1'b0;  // end of frame
   end
 
-  assign count_inc  = alloc;
-  assign s2_valid_d = s1_valid_q && (node1 != '0);
-  assign s2_node_d  = e_b;
-  assign s2_init_d  = alloc;
-  assign s2_x_d     = s1_x_q;
-  assign s2_y_d     = s1_y_q;
-  assign s2_d_d     = s1_d_q;
-  assign left_d_d   = s1_valid_q ? s1_d_q : left_d_q;
-  assign left1_d    = s1_valid_q ? node1 : left1_q;
+  logic lanes_idle;
+  assign lanes_idle = &lane_idle;
 
-  assign row_we    = s1_valid_q;
-  assign row_waddr = s1_x_q;
-  assign row_wdata = {node1, s1_d_q};
+  // ---- Border (lanes only): join the strips row by row -------------------------------------
+  logic border_done;
+  logic tuf_rd_en, tuf_wr_en;
+  logic [NodeW-1:0] tuf_rd_addr, tuf_wr_addr;
+  logic [N1W-1:0] tuf_wr_data;
 
-  // ---- S2 (Frame, Drain) and R3 (Resolve): one descriptor into another ---------------------
-  // S2: desc[node] = the pixel (a new label) or desc[node] + the pixel.
-  // R3: acc[root] = desc[node] (the root itself) or acc[root] + desc[node].
-  scw_pkg::label_desc_t pix;
-  logic [2*XW-1:0] uu;
-  logic [XW+YW-1:0] uv;
-  logic [2*YW-1:0] vv;
-  logic w_valid, w_fresh;
-  logic [NodeW-1:0] w_node;
-  logic [DescW-1:0] w_a, w_b, w_merged, w_value;
+  if (Lanes == 1) begin : gen_no_border
+    assign border_done = 1'b1;
+    assign tuf_rd_en   = 1'b0;
+    assign tuf_rd_addr = '0;
+    assign tuf_wr_en   = 1'b0;
+    assign tuf_wr_addr = '0;
+    assign tuf_wr_data = '0;
+  end else begin : gen_border
+    localparam int unsigned Borders = Lanes - 1;
+    localparam int unsigned QCntW = $clog2(BorderQueue + 1);
+    localparam int unsigned PushW = $clog2(Borders + 1);
+    logic active_q, b1_valid_q, b_read;
+    logic [YW-1:0] row_q;
+    logic [Borders-1:0] last_has_q;
+    logic [Borders*NodeW-1:0] last_a_q, last_b_q;
+    logic [Borders*BordW-1:0] right_rd, left_rd;  // border b: lane b's last, lane b + 1's first
+    logic [Borders-1:0] joined;
+    logic [QCntW-1:0] q_count;
+    logic [PushW-1:0] push_n;
+    logic [Borders*NodeW-1:0] push_a, push_b;
+    logic [Borders-1:0] push;
+    logic uf_idle;
+    logic [16:0] measure_q;
+    logic [LaneSW-1:0] measure_k_q;
+    logic unused_border;  // the first strip has no left border, the last no right
+    assign unused_border = lane_left_we[0] ^ lane_right_we[Lanes-1];
 
-  // pixel_object(x, y, d): moments from the coordinates' own widths, zero-extended.
-  assign uu = (2 * XW)'(s2_x_q) * (2 * XW)'(s2_x_q);
-  assign uv = (XW + YW)'(s2_x_q) * (XW + YW)'(s2_y_q);
-  assign vv = (2 * YW)'(s2_y_q) * (2 * YW)'(s2_y_q);
-  always_comb begin
-    pix.area      = 32'd1;
-    pix.x_min     = 16'(s2_x_q);
-    pix.x_max     = 16'(s2_x_q);
-    pix.closest_x = 16'(s2_x_q);
-    pix.first_x   = 16'(s2_x_q);
-    pix.y_min     = 16'(s2_y_q);
-    pix.y_max     = 16'(s2_y_q);
-    pix.closest_y = 16'(s2_y_q);
-    pix.first_y   = 16'(s2_y_q);
-    pix.d_min     = s2_d_q;
-    pix.d_max     = s2_d_q;
-    pix.m10       = 64'(s2_x_q);
-    pix.m01       = 64'(s2_y_q);
-    pix.m20       = 64'(uu);
-    pix.m11       = 64'(uv);
-    pix.m02       = 64'(vv);
-    pix.m30       = 64'(uu) * 64'(s2_x_q);
-    pix.m21       = 64'(uu) * 64'(s2_y_q);
-    pix.m12       = 64'(uv) * 64'(s2_y_q);
-    pix.m03       = 64'(vv) * 64'(s2_y_q);
+    assign b_read      = ph_border && active_q &&
+                         (q_count <= QCntW'(BorderQueue - 2 * Borders));
+    assign border_done = !active_q && !b1_valid_q && (q_count == '0) && uf_idle;
+
+    for (genvar b = 0; b < Borders; b++) begin : gen_ram
+      logic [BordW-1:0] lp, rp;
+      logic r_we, l_we;
+      logic [HW-1:0] r_waddr, l_waddr;
+      logic [BordW-1:0] r_wdata, l_wdata;
+
+      // Write ports: cleared in Init and as the sweep reads; the lanes' edge columns in a frame.
+      always_comb begin
+        r_we    = 1'b0;
+        r_waddr = HW'(row_q);
+        r_wdata = '0;
+        l_we    = 1'b0;
+        l_waddr = HW'(row_q);
+        l_wdata = '0;
+        if (ph_init) begin
+          r_we    = 32'(init_q) < 32'(MaxHeight);
+          r_waddr = HW'(init_q);
+          l_we    = r_we;
+          l_waddr = r_waddr;
+        end else if (ph_pixels) begin
+          r_we    = lane_right_we[b];
+          r_waddr = HW'(lane_brow[b*YW +: YW]);
+          r_wdata = lane_bword[b*BordW +: BordW];
+          l_we    = lane_left_we[b+1];
+          l_waddr = HW'(lane_brow[(b+1)*YW +: YW]);
+          l_wdata = lane_bword[(b+1)*BordW +: BordW];
+        end else begin
+          r_we = b_read;
+          l_we = b_read;
+        end
+      end
+
+      scw_ram_sdp #(.Width(BordW), .Depth(MaxHeight)) u_right_ram (
+        .clk_i,
+        .wr_en_i  (r_we),
+        .wr_addr_i(r_waddr),
+        .wr_data_i(r_wdata),
+        .rd_en_i  (b_read),
+        .rd_addr_i(HW'(row_q)),
+        .rd_data_o(lp)
+      );
+
+      scw_ram_sdp #(.Width(BordW), .Depth(MaxHeight)) u_left_ram (
+        .clk_i,
+        .wr_en_i  (l_we),
+        .wr_addr_i(l_waddr),
+        .wr_data_i(l_wdata),
+        .rd_en_i  (b_read),
+        .rd_addr_i(HW'(row_q)),
+        .rd_data_o(rp)
+      );
+
+      // B1: the left strip's last pixel and the right strip's first (the later) join.
+      logic j;
+      logic [NodeW-1:0] ea, eb;
+      scw_labelling_join u_join (.d_cur_i(rp[15:0]), .d_nb_i(lp[15:0]), .join_o(j));
+      assign ea        = NodeW'(lp[BordW-1:16] - 1'b1);
+      assign eb        = NodeW'(rp[BordW-1:16] - 1'b1);
+      assign joined[b] = b1_valid_q && (lp[BordW-1:16] != '0) && (rp[BordW-1:16] != '0) && j;
+      // an edge equal to this border's last is dropped
+      assign push[b]   = joined[b] && !(last_has_q[b] && last_a_q[b*NodeW +: NodeW] == ea &&
+                                        last_b_q[b*NodeW +: NodeW] == eb);
+      assign right_rd[b*BordW +: BordW] = lp;
+      assign left_rd[b*BordW +: BordW]  = rp;
+
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          last_has_q[b] <= 1'b0;
+        end else if (frame_end) begin
+          last_has_q[b] <= 1'b0;
+        end else if (push[b]) begin
+          last_has_q[b] <= 1'b1;
+        end
+      end
+      always_ff @(posedge clk_i) begin
+        if (push[b]) begin
+          last_a_q[b*NodeW +: NodeW] <= ea;
+          last_b_q[b*NodeW +: NodeW] <= eb;
+        end
+      end
+    end
+
+    // The pushes in border order, packed from push 0.
+    always_comb begin
+      push_n = '0;
+      push_a = '0;
+      push_b = '0;
+      for (int b = 0; b < Borders; b++) begin
+        if (push[b]) begin
+          push_a[32'(push_n)*NodeW +: NodeW] =
+              NodeW'(right_rd[b*BordW+16 +: N1W] - 1'b1);
+          push_b[32'(push_n)*NodeW +: NodeW] =
+              NodeW'(left_rd[b*BordW+16 +: N1W] - 1'b1);
+          push_n = push_n + 1'b1;
+        end
+      end
+    end
+
+    scw_labelling_merge_unit #(
+      .Nodes  (Nodes),
+      .Depth  (BorderQueue),
+      .MaxPush(Borders)
+    ) u_merge_unit (
+      .clk_i,
+      .rst_ni,
+      .en_i     (ph_border),
+      .push_n_i (push_n),
+      .push_a_i (push_a),
+      .push_b_i (push_b),
+      .rd_data_i(par_rd),
+      .count_o  (q_count),
+      .idle_o   (uf_idle),
+      .rd_en_o  (tuf_rd_en),
+      .rd_addr_o(tuf_rd_addr),
+      .wr_en_o  (tuf_wr_en),
+      .wr_addr_o(tuf_wr_addr),
+      .wr_data_o(tuf_wr_data)
+    );
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        active_q   <= 1'b0;
+        b1_valid_q <= 1'b0;
+        row_q      <= '0;
+      end else begin
+        b1_valid_q <= b_read;
+        if (drained) begin
+          active_q <= 1'b1;
+          row_q    <= '0;
+        end else if (b_read) begin
+          row_q <= row_q + 1'b1;
+          if (17'(row_q) + 17'd1 == {1'b0, cfg_height_i}) active_q <= 1'b0;
+        end
+      end
+    end
+
+    // Init: the strips. A tile column a clock while they do not cover the width; every Lanes-th
+    // adds a tile to the strip, so strip_q = tile_w x floor(tile columns / Lanes).
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        measure_q   <= '0;
+        measure_k_q <= '0;
+        strip_q     <= '0;
+      end else if (ph_init && measure_q < {1'b0, cfg_width_i}) begin
+        measure_q   <= measure_q + {1'b0, cfg_tile_w_i};
+        measure_k_q <= measure_k_q + 1'b1;
+        if (measure_k_q == LaneSW'(Lanes - 1)) strip_q <= strip_q + cfg_tile_w_i;
+      end
+    end
   end
 
-  assign w_valid = ph_pixels ? s2_valid_q : (ph_resolve && r3_valid_q);
-  assign w_node  = ph_pixels ? s2_node_q : r3_root_q;
-  assign w_fresh = ph_pixels ? s2_init_q : (r3_root_q == r3_node_q);
-  assign w_b     = ph_pixels ? pix : desc_rd;
-  assign w_a     = (fwd_valid_q && fwd_node_q == w_node) ? fwd_value_q
-                 : ph_pixels ? desc_rd : acc_rd;
+  // ---- R3 (Resolve): acc[root] = desc[node] (the root itself) or acc[root] + desc[node] -----
+  logic [DescW-1:0] acc_rd, r3_a, r3_merged, r3_value;
+
+  assign r3_a = (afwd_valid_q && afwd_node_q == r3_root_q) ? afwd_value_q : acc_rd;
 
   scw_labelling_merge u_merge (
-    .a_i(w_a),
-    .b_i(w_b),
-    .o_o(w_merged)
+    .a_i(r3_a),
+    .b_i(desc_rd),
+    .o_o(r3_merged)
   );
 
-  assign w_value     = w_fresh ? w_b : w_merged;
-  assign fwd_valid_d = w_valid;
-  assign desc_we     = ph_pixels && s2_valid_q;
-  assign acc_we      = ph_resolve && r3_valid_q;
+  assign r3_value = (r3_root_q == r3_node_q) ? desc_rd : r3_merged;
 
   // ---- the node sweep (Resolve and Emit): used nodes ascending, an empty tile costs a clock -
-  logic [CntW-1:0] sw_count;
   logic sw_yields, sw_step, sw_start;
   logic [NodeW-1:0] sw_node;
 
-  assign sw_count  = count_q[sweep_tile_q];
   assign sw_yields = sweep_active_q && (sw_count != '0);
   assign sw_node   = NodeW'(N1W'(sweep_tile_q) * LabelsN1 + N1W'(sweep_label_q));
 
@@ -457,6 +568,8 @@ module scw_labelling #(
   // ---- Resolve: R0 reads parent[], R1 reads the parent's root, R2 the root and descriptors --
   logic res_done, r1_root;
   logic [NodeW-1:0] r2_root;
+  logic root_re, root_we, acc_re, acc_we;
+  logic [NodeW-1:0] root_raddr, root_rd, acc_raddr;
 
   assign res_done    = !sweep_active_q && !r1_valid_q && !r2_valid_q && !r3_valid_q;
   assign r1_valid_d  = ph_resolve && sw_yields;
@@ -481,7 +594,7 @@ module scw_labelling #(
   assign out_en       = !out_valid_q || out_ready_i;
 
   assign swept        = !sweep_active_q && !e1_valid_q;
-  assign is_object    = (root_rd == e1_node_q) && (acc_rd.area >= cfg_min_area_i);
+  assign is_object    = (root_rd == e1_node_q) && (acc_rd[31:0] >= cfg_min_area_i);  // area
   assign objects_full = emitted_q >= ObjW'(MaxObjects);
   assign emit_object  = ph_emit && e1_valid_q && is_object && !objects_full && out_en;
   // The read registers hold a node that waits for the output register.
@@ -492,27 +605,24 @@ module scw_labelling #(
   assign e1_node_d    = ph_emit && consumed ? sw_node : e1_node_q;
 
   // ---- control -----------------------------------------------------------------------------
-  logic drained;
-  assign drained = (phase_q == PhDrain) && !s1_valid_q && !s2_valid_q && (q_count == '0) &&
-                   uf_idle;
-  assign count_clear = emit_status;
-  assign sw_start    = drained || (ph_resolve && res_done);
-  assign sw_step     = ph_resolve || (ph_emit && consumed);
+  assign drained   = (phase_q == PhDrain) && lanes_idle && (fifo_valid == '0);
+  assign frame_end = emit_status;
+  assign sw_start  = (Lanes == 1 ? drained : ph_border && border_done) ||
+                     (ph_resolve && res_done);
+  assign sw_step   = ph_resolve || (ph_emit && consumed);
 
   always_comb begin
     phase_d       = phase_q;
-    init_d        = init_q;
     in_frame_d    = in_frame_q;
     err_pending_d = err_pending_q;
     err_frame_d   = err_frame_q;
     err_sticky_d  = err_sticky_q;
-    tile_ovf_d    = tile_ovf_q || s1_ovf;
+    tile_ovf_d    = tile_ovf_q || (|lane_ovf);
     obj_ovf_d     = obj_ovf_q || (ph_emit && e1_valid_q && is_object && objects_full);
     emitted_d     = emitted_q + ObjW'(emit_object);
     unique case (phase_q)
       PhInit: begin
-        init_d = init_q + 1'b1;
-        if (init_q == NodeW'(Nodes - 1)) phase_d = PhFrame;
+        if (init_q == InitW'(InitClocks - 1)) phase_d = PhFrame;
       end
       PhFrame, PhDrain: begin
         if (beat_drop) begin
@@ -538,7 +648,10 @@ module scw_labelling #(
           in_frame_d   = 1'b0;
           phase_d      = PhDrain;
         end
-        if (drained) phase_d = PhResolve;
+        if (drained) phase_d = (Lanes == 1) ? PhResolve : PhBorder;
+      end
+      PhBorder: begin
+        if (border_done) phase_d = PhResolve;
       end
       PhResolve: begin
         if (res_done) phase_d = PhEmit;
@@ -585,62 +698,31 @@ module scw_labelling #(
     par_we    = 1'b0;
     par_waddr = r1_node_q;
     par_wdata = '0;
-    unique case (phase_q)
-      PhInit: begin
-        par_we    = 1'b1;
-        par_waddr = init_q;
-      end
-      PhFrame, PhDrain: begin
-        par_re    = uf_rd_en;
-        par_raddr = uf_rd_addr;
-        par_we    = uf_wr_en;
-        par_waddr = uf_wr_addr;
-        par_wdata = uf_wr_data;
-      end
-      PhResolve: begin
-        par_re = sw_yields;     // R0
-        par_we = r1_valid_q;    // R1 clears parent[] for the next frame
-      end
-      default: ;
-    endcase
+    if (ph_border) begin
+      par_re    = tuf_rd_en;
+      par_raddr = tuf_rd_addr;
+      par_we    = tuf_wr_en;
+      par_waddr = tuf_wr_addr;
+      par_wdata = tuf_wr_data;
+    end else if (ph_resolve) begin
+      par_re = sw_yields;     // R0
+      par_we = r1_valid_q;    // R1 clears parent[] for the next frame
+    end
   end
 
+  assign desc_re    = ph_resolve && r2_valid_q;
   assign root_re    = (ph_resolve && r1_valid_q && !r1_root) || emit_read;
   assign root_raddr = ph_resolve ? r2_parent_d : sw_node;
   assign root_we    = ph_resolve && r2_valid_q;
-  assign root_waddr = r2_node_q;
-  assign root_wdata = r2_root;
-
-  assign desc_re    = ph_pixels ? (s1_valid_q && node1 != '0) : (ph_resolve && r2_valid_q);
-  assign desc_raddr = ph_pixels ? e_b : r2_node_q;
   assign acc_re     = (ph_resolve && r2_valid_q) || emit_read;
   assign acc_raddr  = ph_resolve ? r2_root : sw_node;
-
-  scw_ram_sdp #(.Width(RowW), .Depth(MaxWidthPx)) u_row_ram (
-    .clk_i,
-    .wr_en_i  (row_we),
-    .wr_addr_i(row_waddr),
-    .wr_data_i(row_wdata),
-    .rd_en_i  (row_re),
-    .rd_addr_i(row_raddr),
-    .rd_data_o(row_rd)
-  );
-
-  scw_ram_sdp #(.Width(N1W), .Depth(Nodes)) u_parent_ram (
-    .clk_i,
-    .wr_en_i  (par_we),
-    .wr_addr_i(par_waddr),
-    .wr_data_i(par_wdata),
-    .rd_en_i  (par_re),
-    .rd_addr_i(par_raddr),
-    .rd_data_o(par_rd)
-  );
+  assign acc_we     = ph_resolve && r3_valid_q;
 
   scw_ram_sdp #(.Width(NodeW), .Depth(Nodes)) u_root_ram (
     .clk_i,
     .wr_en_i  (root_we),
-    .wr_addr_i(root_waddr),
-    .wr_data_i(root_wdata),
+    .wr_addr_i(r2_node_q),
+    .wr_data_i(r2_root),
     .rd_en_i  (root_re),
     .rd_addr_i(root_raddr),
     .rd_data_o(root_rd)
@@ -651,25 +733,11 @@ module scw_labelling #(
     .MaxWidthPx(MaxWidthPx),
     .MaxHeight (MaxHeight),
     .Depth     (Nodes)
-  ) u_desc_ram (
-    .clk_i,
-    .wr_en_i  (desc_we),
-    .wr_addr_i(s2_node_q),
-    .wr_data_i(w_value),
-    .rd_en_i  (desc_re),
-    .rd_addr_i(desc_raddr),
-    .rd_data_o(desc_rd)
-  );
-
-  scw_labelling_desc_ram #(
-    .MaxWidthPx(MaxWidthPx),
-    .MaxHeight (MaxHeight),
-    .Depth     (Nodes)
   ) u_acc_ram (
     .clk_i,
     .wr_en_i  (acc_we),
     .wr_addr_i(r3_root_q),
-    .wr_data_i(w_value),
+    .wr_data_i(r3_value),
     .rd_en_i  (acc_re),
     .rd_addr_i(acc_raddr),
     .rd_data_o(acc_rd)
@@ -687,11 +755,7 @@ module scw_labelling #(
       tile_ovf_q     <= 1'b0;
       obj_ovf_q      <= 1'b0;
       emitted_q      <= '0;
-      s1_valid_q     <= 1'b0;
-      s2_valid_q     <= 1'b0;
-      left1_q        <= '0;
-      has_last_q     <= 1'b0;
-      fwd_valid_q    <= 1'b0;
+      afwd_valid_q   <= 1'b0;
       rfwd_valid_q   <= 1'b0;
       sweep_active_q <= 1'b0;
       r1_valid_q     <= 1'b0;
@@ -701,7 +765,7 @@ module scw_labelling #(
       out_valid_q    <= 1'b0;
     end else begin
       phase_q        <= phase_d;
-      init_q         <= init_d;
+      if (ph_init) init_q <= init_q + 1'b1;
       in_frame_q     <= in_frame_d;
       err_pending_q  <= err_pending_d;
       err_frame_q    <= err_frame_d;
@@ -709,11 +773,7 @@ module scw_labelling #(
       tile_ovf_q     <= tile_ovf_d;
       obj_ovf_q      <= obj_ovf_d;
       emitted_q      <= emitted_d;
-      s1_valid_q     <= s1_valid_d;
-      s2_valid_q     <= s2_valid_d;
-      left1_q        <= left1_d;
-      has_last_q     <= has_last_d;
-      fwd_valid_q    <= fwd_valid_d;
+      afwd_valid_q   <= ph_resolve && r3_valid_q;
       rfwd_valid_q   <= rfwd_valid_d;
       sweep_active_q <= sweep_active_d;
       r1_valid_q     <= r1_valid_d;
@@ -724,46 +784,14 @@ module scw_labelling #(
     end
   end
 
-  // Labels per tile: one block per tile (no delayed array writes in a for loop), all cleared
-  // when a frame's status word leaves.
-  for (genvar t = 0; t < Tiles; t++) begin : gen_count
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        count_q[t] <= '0;
-      end else if (count_clear) begin
-        count_q[t] <= '0;
-      end else if (count_inc && s1_tile_q == TileW'(t)) begin
-        count_q[t] <= count_q[t] + 1'b1;
-      end
-    end
-  end
-
   // Datapath registers: meaningful only under their valid bits.
   always_ff @(posedge clk_i) begin
     x_q           <= x_d;
     y_q           <= y_d;
-    tx_q          <= tx_d;
-    ty_q          <= ty_d;
-    tcol_q        <= tcol_d;
-    trow_q        <= trow_d;
-    s1_d_q        <= s1_d_d;
-    s1_x_q        <= s1_x_d;
-    s1_y_q        <= s1_y_d;
-    s1_tile_q     <= s1_tile_d;
-    s1_has_left_q <= s1_has_left_d;
-    s1_has_up_q   <= s1_has_up_d;
-    s1_left_same_q <= s1_left_same_d;
-    s1_up_same_q  <= s1_up_same_d;
-    s2_node_q     <= s2_node_d;
-    s2_init_q     <= s2_init_d;
-    s2_x_q        <= s2_x_d;
-    s2_y_q        <= s2_y_d;
-    s2_d_q        <= s2_d_d;
-    left_d_q      <= left_d_d;
-    last_a_q      <= last_a_d;
-    last_b_q      <= last_b_d;
-    fwd_node_q    <= w_node;
-    fwd_value_q   <= w_value;
+    lane_q        <= lane_d;
+    lane_col_q    <= lane_col_d;
+    afwd_node_q   <= r3_root_q;
+    afwd_value_q  <= r3_value;
     rfwd_node_q   <= r2_node_q;
     rfwd_root_q   <= r2_root;
     sweep_tile_q  <= sweep_tile_d;

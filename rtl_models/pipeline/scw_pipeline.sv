@@ -3,14 +3,14 @@
 // rectifier), disparity, labelling and warning, every link an scw_fifo.
 `default_nettype none
 
-//  left raw  -> [camera L] --rect--> scw_disparity -> FIFO -> (Ppc > 1: scw_beat_split -> FIFO)
-//  right raw -> [camera R] --rect-->                 -> scw_labelling -> FIFO -> scw_warning
-//                  |flag                                 -> FIFO -> scw_result_merge -> FIFO -> out
-//                  +--------------------------------------------------^
+//  left raw  -> [camera L] --rect--> scw_disparity -> FIFO -> scw_labelling -> FIFO -> scw_warning
+//  right raw -> [camera R] --rect-->       -> FIFO -> scw_result_merge -> FIFO -> out
+//                  |flag                                   ^
+//                  +---------------------------------------+
 // The C++ chain sim/pipeline_chain.hpp builds the same graph from the stages' models (or their
 // Verilated twins) and sim::Fifo, the twin of scw_fifo, so the two agree clock for clock
 // (tests/pipeline). Parameters: hls::pipeline::PipelineParams, the one list of built sizes.
-// The labelling stage takes one pixel per clock, so for Ppc > 1 the disparity beats are split.
+// The labelling stage takes Ppc pixels per beat, one lane per pixel (scw_labelling "Lanes").
 module scw_pipeline #(
   parameter int unsigned Ppc            /*verilator public*/ = 1,
   parameter int unsigned MaxWidthPx     /*verilator public*/ = 64,
@@ -173,39 +173,6 @@ module scw_pipeline #(
     .count_o()
   );
 
-  // one disparity per beat into labelling
-  logic        s_valid, s_ready, s_sof, s_eol;
-  logic [15:0] s_data;
-
-  if (Ppc > 1) begin : gen_split
-    logic        b_valid, b_ready, b_sof, b_eol;
-    logic [15:0] b_data;
-    logic [17:0] sq_word;
-
-    scw_beat_split #(.Ppc(Ppc), .PixW(16)) u_split (
-      .clk_i, .rst_ni,
-      .in_valid_i(dq_valid), .in_ready_o(dq_ready), .in_data_i(dq_word[DispW-1:0]),
-      .in_sof_i(dq_word[DispW]), .in_eol_i(dq_word[DispW+1]),
-      .out_valid_o(b_valid), .out_ready_i(b_ready), .out_data_o(b_data), .out_sof_o(b_sof),
-      .out_eol_o(b_eol)
-    );
-    scw_fifo #(.Width(18), .Depth(DispFifoDepth)) u_split_fifo (
-      .clk_i, .rst_ni,
-      .in_valid_i(b_valid), .in_ready_o(b_ready), .in_data_i({b_eol, b_sof, b_data}),
-      .out_valid_o(s_valid), .out_ready_i(s_ready), .out_data_o(sq_word),
-      .count_o()
-    );
-    assign s_data = sq_word[15:0];
-    assign s_sof  = sq_word[16];
-    assign s_eol  = sq_word[17];
-  end else begin : gen_no_split
-    assign s_valid  = dq_valid;
-    assign dq_ready = s_ready;
-    assign s_data   = dq_word[15:0];
-    assign s_sof    = dq_word[16];
-    assign s_eol    = dq_word[17];
-  end
-
   // labelling -> FIFO -> warning -> FIFO
   logic            o_valid, o_ready, o_last, oq_valid, oq_ready;
   logic [ObjW-1:0] o_data;
@@ -216,13 +183,13 @@ module scw_pipeline #(
 
   scw_labelling #(
     .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .MaxTilesX(MaxTilesX),
-    .MaxTilesY(MaxTilesY), .LabelsPerTile(LabelsPerTile), .MaxObjects(MaxObjects)
+    .MaxTilesY(MaxTilesY), .LabelsPerTile(LabelsPerTile), .MaxObjects(MaxObjects), .Lanes(Ppc)
   ) u_labelling (
     .clk_i, .rst_ni,
     .cfg_width_i(16'(cfg_width_i)), .cfg_height_i(16'(cfg_height_i)),
     .cfg_tile_w_i, .cfg_tile_h_i, .cfg_floor_i, .cfg_min_area_i,
-    .in_valid_i(s_valid), .in_ready_o(s_ready), .in_data_i(s_data), .in_sof_i(s_sof),
-    .in_eol_i(s_eol),
+    .in_valid_i(dq_valid), .in_ready_o(dq_ready), .in_data_i(dq_word[DispW-1:0]),
+    .in_sof_i(dq_word[DispW]), .in_eol_i(dq_word[DispW+1]),
     .out_valid_o(o_valid), .out_ready_i(o_ready), .out_data_o(o_data), .out_last_o(o_last),
     .err_o(err_lab)
   );

@@ -3,12 +3,8 @@
 // hls::pipeline::SmallPipeline<P>, bundled for PipelineChain and PipelineTop.
 #pragma once
 
-#include <cstdint>
-
 #include "Vpipe_ground.h"
 #include "Vpipe_ground_scw_ground.h"
-#include "Vpipe_labelling.h"
-#include "Vpipe_labelling_scw_labelling.h"
 #include "Vpipe_merge.h"
 #include "Vpipe_merge_scw_result_merge.h"
 #include "Vpipe_p1_check.h"
@@ -17,12 +13,14 @@
 #include "Vpipe_p1_disparity_scw_disparity.h"
 #include "Vpipe_p1_grid.h"
 #include "Vpipe_p1_grid_scw_rectify_map_grid.h"
+#include "Vpipe_p1_labelling.h"
+#include "Vpipe_p1_labelling_scw_labelling.h"
 #include "Vpipe_p1_rectify.h"
 #include "Vpipe_p1_rectify_scw_rectify.h"
 #include "Vpipe_p1_top.h"
 #include "Vpipe_p1_top_scw_pipeline.h"
-#include "Vpipe_p2_split.h"
-#include "Vpipe_p2_split_scw_beat_split.h"
+#include "Vpipe_p2_labelling.h"
+#include "Vpipe_p2_labelling_scw_labelling.h"
 #include "Vpipe_p2_top.h"
 #include "Vpipe_p2_top_scw_pipeline.h"
 #include "Vpipe_warning.h"
@@ -45,8 +43,8 @@ static_assert(map_grid_params_match<Vpipe_p1_grid_scw_rectify_map_grid,
 static_assert(rectify_params_match<Vpipe_p1_rectify_scw_rectify, Build<1>::rectify>());
 static_assert(disparity_params_match<Vpipe_p1_disparity_scw_disparity,
                                                hls::disparity::Disparity<Build<1>::disparity>>());
-static_assert(beat_split_params_match<Vpipe_p2_split_scw_beat_split, std::uint16_t, 2>());
-static_assert(labelling_params_match<Vpipe_labelling_scw_labelling, Build<1>::labelling>());
+static_assert(labelling_params_match<Vpipe_p1_labelling_scw_labelling, Build<1>::labelling>());
+static_assert(labelling_params_match<Vpipe_p2_labelling_scw_labelling, Build<2>::labelling>());
 static_assert(warning_params_match<Vpipe_warning_scw_warning, Build<1>::warning>());
 static_assert(result_merge_params_match<Vpipe_merge_scw_result_merge>());
 static_assert(ground_params_match<Vpipe_ground_scw_ground, Build<1>::ground>());
@@ -57,16 +55,15 @@ template <int P>
 struct Rtl;
 template <>
 struct Rtl<1> {
-  using type = PipelineRtl<Vpipe_p1_check, Vpipe_p1_grid, Vpipe_p1_rectify,
-                                     Vpipe_p1_disparity, void, Vpipe_labelling, Vpipe_warning,
-                                     Vpipe_merge, Vpipe_ground>;
+  using type = PipelineRtl<Vpipe_p1_check, Vpipe_p1_grid, Vpipe_p1_rectify, Vpipe_p1_disparity,
+                           Vpipe_p1_labelling, Vpipe_warning, Vpipe_merge, Vpipe_ground>;
   using top = Vpipe_p1_top;
 };
 template <>
 struct Rtl<2> {
   // The blocks whose only difference at P = 2 is their width run in the top (PipelineTop).
-  using type = PipelineRtl<void, void, void, void, Vpipe_p2_split, Vpipe_labelling,
-                           Vpipe_warning, Vpipe_merge, Vpipe_ground>;
+  using type = PipelineRtl<void, void, void, void, Vpipe_p2_labelling, Vpipe_warning,
+                           Vpipe_merge>;
   using top = Vpipe_p2_top;
 };
 

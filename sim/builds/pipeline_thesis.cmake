@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
 # The thesis-size pipeline build (hls::pipeline::ThesisPipeline<P>: 1280 x 480, window 21, 45
 # candidates; sim/builds/pipeline_thesis_rtl.hpp static_asserts these parameters): every block
-# Verilated at P = 1 and 2, for `scw sim --config thesis --engine rtl`. Many minutes of Verilator
-# and g++ -O3, so only with -DSCW_THESIS_RTL=ON (docs/performance.md), never in CI.
-# SCW_THESIS_RTL_PPC picks the beat widths (each adds minutes of compile).
+# Verilated at each beat width of SCW_THESIS_RTL_PPC (1, 2, 4), for `scw sim --config thesis
+# --engine rtl`. Many minutes of Verilator and g++ -O3 per width, so only with
+# -DSCW_THESIS_RTL=ON (docs/performance.md), never in CI.
 set(SCW_THESIS_RTL_PPC "1;2" CACHE STRING "Beat widths of the thesis-size Verilated blocks")
 scw_rtl_model_library(scw_rtl_pipeline_thesis)
 foreach(p IN LISTS SCW_THESIS_RTL_PPC)
@@ -16,15 +16,14 @@ foreach(p IN LISTS SCW_THESIS_RTL_PPC)
   scw_verilate(scw_rtl_pipeline_thesis TOP scw_disparity PREFIX Vthesis_p${p}_disparity
                STAGE disparity
                PARAMS Ppc=${p} MaxWidthPx=1280 MaxHeight=480 Window=21 NumDisp=45 NO_TRACE)
+  scw_verilate(scw_rtl_pipeline_thesis TOP scw_labelling PREFIX Vthesis_p${p}_labelling
+               STAGE labelling
+               PARAMS MaxWidthPx=1280 MaxHeight=480 MaxTilesX=8 MaxTilesY=4 LabelsPerTile=256
+                      MaxObjects=256 Lanes=${p} NO_TRACE)
+  if(NOT p EQUAL 1)
+    target_compile_definitions(scw_rtl_pipeline_thesis INTERFACE SCW_THESIS_RTL_P${p}=1)
+  endif()
 endforeach()
-if(2 IN_LIST SCW_THESIS_RTL_PPC)
-  scw_verilate(scw_rtl_pipeline_thesis TOP scw_beat_split PREFIX Vthesis_p2_split STAGE pipeline
-               FILES scw_beat_split.sv PARAMS Ppc=2 PixW=16 NO_TRACE)
-  target_compile_definitions(scw_rtl_pipeline_thesis INTERFACE SCW_THESIS_RTL_P2=1)
-endif()
-scw_verilate(scw_rtl_pipeline_thesis TOP scw_labelling PREFIX Vthesis_labelling STAGE labelling
-             PARAMS MaxWidthPx=1280 MaxHeight=480 MaxTilesX=8 MaxTilesY=4 LabelsPerTile=256
-                    MaxObjects=256 NO_TRACE)
 scw_verilate(scw_rtl_pipeline_thesis TOP scw_warning PREFIX Vthesis_warning STAGE warning
              PARAMS MaxDisparityPx=128 NO_TRACE)
 scw_verilate(scw_rtl_pipeline_thesis TOP scw_ground PREFIX Vthesis_ground STAGE ground

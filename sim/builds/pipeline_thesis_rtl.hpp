@@ -1,22 +1,28 @@
 // SPDX-License-Identifier: Apache-2.0
 // The thesis-size build's Verilated blocks (sim/builds/pipeline_thesis.cmake), each checked
-// against hls::pipeline::ThesisPipeline<P>, bundled for PipelineChain.
+// against hls::pipeline::ThesisPipeline<P>, bundled for PipelineChain. P = 1 always; P = 2 and 4
+// when SCW_THESIS_RTL_PPC has them.
 #pragma once
 
-#include <cstdint>
+#include <type_traits>
 
 #include "Vthesis_ground.h"
 #include "Vthesis_ground_scw_ground.h"
-#include "Vthesis_labelling.h"
-#include "Vthesis_labelling_scw_labelling.h"
 #include "Vthesis_merge.h"
 #include "Vthesis_merge_scw_result_merge.h"
+#include "Vthesis_warning.h"
+#include "Vthesis_warning_scw_warning.h"
+#include "hls/pipeline/pipeline_params.hpp"
+#include "sim/pipeline_chain.hpp"
+// One beat width's blocks: Vthesis_p<P>_{check, grid, rectify, disparity, labelling}.
 #include "Vthesis_p1_check.h"
 #include "Vthesis_p1_check_scw_frame_check.h"
 #include "Vthesis_p1_disparity.h"
 #include "Vthesis_p1_disparity_scw_disparity.h"
 #include "Vthesis_p1_grid.h"
 #include "Vthesis_p1_grid_scw_rectify_map_grid.h"
+#include "Vthesis_p1_labelling.h"
+#include "Vthesis_p1_labelling_scw_labelling.h"
 #include "Vthesis_p1_rectify.h"
 #include "Vthesis_p1_rectify_scw_rectify.h"
 #if SCW_THESIS_RTL_P2
@@ -26,15 +32,23 @@
 #include "Vthesis_p2_disparity_scw_disparity.h"
 #include "Vthesis_p2_grid.h"
 #include "Vthesis_p2_grid_scw_rectify_map_grid.h"
+#include "Vthesis_p2_labelling.h"
+#include "Vthesis_p2_labelling_scw_labelling.h"
 #include "Vthesis_p2_rectify.h"
 #include "Vthesis_p2_rectify_scw_rectify.h"
-#include "Vthesis_p2_split.h"
-#include "Vthesis_p2_split_scw_beat_split.h"
 #endif
-#include "Vthesis_warning.h"
-#include "Vthesis_warning_scw_warning.h"
-#include "hls/pipeline/pipeline_params.hpp"
-#include "sim/pipeline_chain.hpp"
+#if SCW_THESIS_RTL_P4
+#include "Vthesis_p4_check.h"
+#include "Vthesis_p4_check_scw_frame_check.h"
+#include "Vthesis_p4_disparity.h"
+#include "Vthesis_p4_disparity_scw_disparity.h"
+#include "Vthesis_p4_grid.h"
+#include "Vthesis_p4_grid_scw_rectify_map_grid.h"
+#include "Vthesis_p4_labelling.h"
+#include "Vthesis_p4_labelling_scw_labelling.h"
+#include "Vthesis_p4_rectify.h"
+#include "Vthesis_p4_rectify_scw_rectify.h"
+#endif
 
 namespace scw::sim::thesis_build {
 
@@ -44,41 +58,44 @@ using Build = hls::pipeline::ThesisPipeline<P>;
 template <int P>
 using Check = typename FrameCheckModel<P, Build<P>::kMaxWidthPx, Build<P>::kMaxHeight>::params;
 
-// Every Verilated model against the build it stands for.
-static_assert(frame_check_params_match<Vthesis_p1_check_scw_frame_check, Check<1>>());
-static_assert(map_grid_params_match<Vthesis_p1_grid_scw_rectify_map_grid, Build<1>::map_grid>());
-static_assert(rectify_params_match<Vthesis_p1_rectify_scw_rectify, Build<1>::rectify>());
-static_assert(disparity_params_match<Vthesis_p1_disparity_scw_disparity,
-                                     hls::disparity::Disparity<Build<1>::disparity>>());
-static_assert(labelling_params_match<Vthesis_labelling_scw_labelling, Build<1>::labelling>());
+/// The blocks of beat width P, each Verilated model checked against the build it stands for.
+template <int P, typename VCheck, typename VGrid, typename VRectify, typename VDisparity,
+          typename VLabelling, typename VFCheck, typename VFGrid, typename VFRectify,
+          typename VFDisparity, typename VFLabelling>
+struct Blocks {
+  static_assert(frame_check_params_match<VFCheck, Check<P>>());
+  static_assert(map_grid_params_match<VFGrid, typename Build<P>::map_grid>());
+  static_assert(rectify_params_match<VFRectify, typename Build<P>::rectify>());
+  static_assert(disparity_params_match<VFDisparity,
+                                       hls::disparity::Disparity<typename Build<P>::disparity>>());
+  static_assert(labelling_params_match<VFLabelling, typename Build<P>::labelling>());
+  using type = PipelineRtl<VCheck, VGrid, VRectify, VDisparity, VLabelling, Vthesis_warning,
+                           Vthesis_merge, std::conditional_t<P == 1, Vthesis_ground, void>>;
+};
+
 static_assert(warning_params_match<Vthesis_warning_scw_warning, Build<1>::warning>());
 static_assert(result_merge_params_match<Vthesis_merge_scw_result_merge>());
 static_assert(ground_params_match<Vthesis_ground_scw_ground, Build<1>::ground>());
 
-#if SCW_THESIS_RTL_P2
-static_assert(frame_check_params_match<Vthesis_p2_check_scw_frame_check, Check<2>>());
-static_assert(map_grid_params_match<Vthesis_p2_grid_scw_rectify_map_grid, Build<2>::map_grid>());
-static_assert(rectify_params_match<Vthesis_p2_rectify_scw_rectify, Build<2>::rectify>());
-static_assert(disparity_params_match<Vthesis_p2_disparity_scw_disparity,
-                                     hls::disparity::Disparity<Build<2>::disparity>>());
-static_assert(beat_split_params_match<Vthesis_p2_split_scw_beat_split, std::uint16_t, 2>());
-#endif
+#define SCW_THESIS_BLOCKS(P)                                                                 \
+  Blocks<P, Vthesis_p##P##_check, Vthesis_p##P##_grid, Vthesis_p##P##_rectify,               \
+         Vthesis_p##P##_disparity, Vthesis_p##P##_labelling,                                 \
+         Vthesis_p##P##_check_scw_frame_check, Vthesis_p##P##_grid_scw_rectify_map_grid,     \
+         Vthesis_p##P##_rectify_scw_rectify, Vthesis_p##P##_disparity_scw_disparity,         \
+         Vthesis_p##P##_labelling_scw_labelling>
 
 template <int P>
 struct Rtl;
 template <>
-struct Rtl<1> {
-  using type = PipelineRtl<Vthesis_p1_check, Vthesis_p1_grid, Vthesis_p1_rectify,
-                           Vthesis_p1_disparity, void, Vthesis_labelling, Vthesis_warning,
-                           Vthesis_merge, Vthesis_ground>;
-};
+struct Rtl<1> : SCW_THESIS_BLOCKS(1) {};
 #if SCW_THESIS_RTL_P2
 template <>
-struct Rtl<2> {
-  using type = PipelineRtl<Vthesis_p2_check, Vthesis_p2_grid, Vthesis_p2_rectify,
-                           Vthesis_p2_disparity, Vthesis_p2_split, Vthesis_labelling,
-                           Vthesis_warning, Vthesis_merge, Vthesis_ground>;
-};
+struct Rtl<2> : SCW_THESIS_BLOCKS(2) {};
 #endif
+#if SCW_THESIS_RTL_P4
+template <>
+struct Rtl<4> : SCW_THESIS_BLOCKS(4) {};
+#endif
+#undef SCW_THESIS_BLOCKS
 
 }  // namespace scw::sim::thesis_build

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // [rtl] scw_labelling against the labelling model clock for clock (the same cycle trace) under
-// every stall pattern, both against the flood-fill reference; overflows and broken frames
-// flagged with the next frame correct.
+// every stall pattern, both against the flood-fill reference, at one lane and at 2 and 4 lanes
+// (pixels per beat); overflows and broken frames flagged with the next frame correct.
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -14,6 +14,10 @@
 #include "Vlabelling_b_scw_labelling.h"
 #include "Vlabelling_c.h"
 #include "Vlabelling_c_scw_labelling.h"
+#include "Vlabelling_l2.h"
+#include "Vlabelling_l2_scw_labelling.h"
+#include "Vlabelling_l4.h"
+#include "Vlabelling_l4_scw_labelling.h"
 #include "host/labelling/run_model.hpp"
 #include "sim/labelling_model.hpp"
 #include "sim/labelling_rtl.hpp"
@@ -39,7 +43,13 @@ using ParamsC = LabellingParams<20, 12, 3, 3, 20, 100>;
 
 static_assert(scw::sim::labelling_params_match<Vlabelling_a_scw_labelling, ParamsA>());
 static_assert(scw::sim::labelling_params_match<Vlabelling_b_scw_labelling, ParamsB>());
+// L2, L4: A's capacities at 2 and 4 pixels per beat, one lane per strip of tile columns.
+using ParamsL2 = LabellingParams<32, 24, 4, 4, 128, 256, 2>;
+using ParamsL4 = LabellingParams<32, 24, 4, 4, 128, 256, 4>;
+
 static_assert(scw::sim::labelling_params_match<Vlabelling_c_scw_labelling, ParamsC>());
+static_assert(scw::sim::labelling_params_match<Vlabelling_l2_scw_labelling, ParamsL2>());
+static_assert(scw::sim::labelling_params_match<Vlabelling_l4_scw_labelling, ParamsL4>());
 
 /// One run of each twin on the same beats.
 struct TwinRun {
@@ -50,7 +60,7 @@ struct TwinRun {
 /// The model and the RTL on `beats` under `pattern` until `frames_n` status words have left:
 /// the same cycle trace and outputs (check_twin_runs); returns the RTL's frames.
 template <typename VM, typename Params>
-TwinRun run_twins(const std::vector<InBeat>& beats, std::size_t frames_n,
+TwinRun run_twins(const std::vector<typename Params::in_beat>& beats, std::size_t frames_n,
                   const LabellingConfig& cfg, const StallPattern& pattern) {
   auto enough = [frames_n](const std::vector<LabelPacket>& out) {
     std::size_t n = 0;
@@ -68,7 +78,7 @@ TwinRun run_twins(const std::vector<InBeat>& beats, std::size_t frames_n,
 /// `maps` back to back under every stall pattern: twins equal, frames equal the reference.
 template <typename VM, typename Params>
 void check_maps(const std::vector<DispMap>& maps, const LabellingConfig& cfg) {
-  const auto beats = map_beats(maps);
+  const auto beats = map_beats<typename Params::in_beat>(maps);
   for (const auto& pattern : StallPattern::all(3)) {
     INFO("stalls " << pattern.name());
     const auto r = run_twins<VM, Params>(beats, maps.size(), cfg, pattern);
@@ -194,6 +204,58 @@ TEST_CASE("scw_labelling flags broken frames like the model, the next frame corr
       CHECK(r.frames[0].status.stream_error);
       if (s.first_whole)  // flagged on the frame they precede
         CHECK(raster_sorted(r.frames[0].objects) == raster_sorted(r.frames[1].objects));
+      check_against_reference({r.frames.back()}, {good}, cfg);
+    }
+  }
+}
+
+TEST_CASE("scw_labelling with lanes equals the model clock for clock on random maps",
+          "[labelling][rtl]") {
+  const auto maps = random_maps(32, 24, 41);
+  // 4 x 4 tiles of 8 x 6 and 4 x 3 of 8 x 8: one or two tile columns per lane.
+  for (const Grid& g : {Grid{4, 4}, Grid{4, 3}}) {
+    DYNAMIC_SECTION("grid " << g.tx << " x " << g.ty) {
+      check_maps<Vlabelling_l2, ParamsL2>(maps, grid_config(32, 24, g.tx, g.ty, 0, 1));
+      check_maps<Vlabelling_l4, ParamsL4>(maps, grid_config(32, 24, g.tx, g.ty, 0, 3));
+    }
+  }
+  SECTION("two lanes of two tile columns: 2 x 2 tiles of 16 x 12") {
+    check_maps<Vlabelling_l2, ParamsL2>(maps, grid_config(32, 24, 2, 2, 0, 1));
+  }
+  SECTION("the last strip narrower: 30 or 28 px in tiles of 8") {
+    check_maps<Vlabelling_l2, ParamsL2>(random_maps(30, 24, 43),
+                                        LabellingConfig{30, 24, 8, 6, 0, 1});
+    check_maps<Vlabelling_l4, ParamsL4>(random_maps(28, 24, 47),
+                                        LabellingConfig{28, 24, 8, 6, 0, 1});
+  }
+}
+
+TEST_CASE("scw_labelling with lanes equals the model clock for clock on adversarial shapes",
+          "[labelling][rtl]") {
+  auto maps = adversarial_maps(32, 24);
+  DispMap stripes = blank_map("stripes", 32, 24);  // every pixel an edge to the one above
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 32; ++x) stripes.at(x, y) = x % 2 ? 480 : 160;
+  maps.push_back(stripes);
+  for (const auto& m : maps) {
+    INFO("map " << m.name);
+    check_maps<Vlabelling_l2, ParamsL2>({m}, grid_config(32, 24, 4, 4, 0, 1));
+    check_maps<Vlabelling_l4, ParamsL4>({m}, grid_config(32, 24, 4, 2, 0, 1));
+  }
+}
+
+TEST_CASE("scw_labelling with lanes flags broken frames like the model, the next frame correct",
+          "[labelling][rtl]") {
+  const auto cfg = grid_config(32, 24, 4, 2, 0, 1);
+  const DispMap good = nested_u_map(32, 24);
+  for (const auto& s : broken_streams<ParamsL4::in_beat>(good, 25, 3)) {
+    for (const auto& pattern : StallPattern::all(3)) {
+      INFO(s.name << ", stalls " << pattern.name());
+      auto r = run_twins<Vlabelling_l4, ParamsL4>(s.beats, 2, cfg, pattern);
+      CHECK(r.err_cpp);
+      CHECK(r.err_rtl);
+      REQUIRE(r.frames.size() == 2);
+      CHECK(r.frames[0].status.stream_error);
       check_against_reference({r.frames.back()}, {good}, cfg);
     }
   }

@@ -16,6 +16,7 @@ verilator --binary --timing -Wno-fatal -Wno-lint -Wno-style --top-module tb_labe
   -GLabelsPerTile="$(field labels_per_tile)" -GMaxObjects="$(field max_objects)" \
   -GBeatsIn="$(field beats_in)" -GWordsOut="$(field words_out)" -GFrames="$(field frames)" \
   "$root/rtl_models/common/scw_pkg.sv" "$root/rtl_models/common/scw_ram_sdp.sv" \
+  "$root/rtl_models/common/scw_fifo.sv" \
   "$root"/rtl_models/labelling/*.sv "$root/tests/labelling/tb/tb_labelling_replay.sv" \
   -Mdir "$work/obj" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 "$work/obj/Vtb_labelling_replay" +vectors="$set_dir" +width="$(field width)" \
