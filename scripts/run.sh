@@ -34,6 +34,7 @@ mkdir -p out/disparity
 # beside the thesis's Table 5.7, and at the small size with every block Verilated.
 mkdir -p out/sim
 ./build/host/cli/scw sim --config thesis --ppc 1 --frames 3 --engine cpp --json out/sim/thesis_p1.json
+./build/host/cli/scw sim --config thesis --ppc 4 --frames 3 --engine cpp --json out/sim/thesis_p4.json
 ./build/host/cli/scw sim --config small --ppc 1 --frames 3 --engine rtl --json out/sim/small_rtl.json
 # Five poses of the distance sweep (30 .. 6 m; the full 49 are docs/scene.md's), rendered raw,
 # rectified and run at the thesis size, scored against the truth: table, plots, eval.json.
