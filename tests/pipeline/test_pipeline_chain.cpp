@@ -156,9 +156,11 @@ scene_beats(int w, int h, int frames) {
 
 }  // namespace
 
-TEST_CASE("20 frames under random input gaps and output backpressure: same results, no deadlock",
-          "[pipeline][rtl][sim]") {
-  constexpr int P = 1;
+namespace {
+
+/// 20 frames under random input gaps and output backpressure, at P pixels per beat.
+template <int P>
+void check_stalls() {
   const int w = 48, h = 24, frames = 20;
   const auto [left, right] = scene_beats<P>(w, h, frames);
   const auto setup = small_setup(w, h, false);
@@ -181,6 +183,14 @@ TEST_CASE("20 frames under random input gaps and output backpressure: same resul
     CHECK(t.result_cycles == result_cycles<P>(cpp));
     CHECK(cpp.cycles() > calm.cycles());  // the gaps did cost time
   }
+}
+
+}  // namespace
+
+TEST_CASE("20 frames under random input gaps and output backpressure: same results, no deadlock",
+          "[pipeline][rtl][sim]") {
+  SECTION("P = 1") { check_stalls<1>(); }
+  SECTION("P = 2: the labelling stage's two lanes") { check_stalls<2>(); }
 }
 
 TEST_CASE("broken input frames are flagged in their result; the next frame is right",
