@@ -70,9 +70,11 @@ void check_config(const LabellingConfig& cfg) {
 ///   kBorder   (lanes only) every row: the pixels either side of each strip border that join
 ///             queue an edge for a merge unit over the whole node space
 ///   kResolve  every used node in ascending order: its root (parent[] points to smaller nodes
-///             only, so the parent's root is already known) and its descriptor into the root's
-///   kEmit     every used node again: roots of at least min_area pixels leave as objects, up to
-///             MaxObjects; then the status word with `last`
+///             only, so the parent's root is already known) and its descriptor into the root's;
+///             the sweep copies each tile's label count for Emit. Then the next frame may start
+/// Emit, alongside the next frame (it reads only the root and sum RAMs, which the next frame's
+/// Resolve waits for): every used node again; roots of at least min_area pixels leave as
+/// objects, up to MaxObjects; then the status word with `last`.
 template <typename Params>
 class Labelling {
  public:
@@ -91,7 +93,7 @@ class Labelling {
   using in_type = typename Params::in_beat;
   using out_type = LabelPacket;
   using Lane = LabellingLane<Params>;
-  enum Phase { kInit, kFrame, kDrain, kBorder, kResolve, kEmit };
+  enum Phase { kInit, kFrame, kDrain, kBorder, kResolve };
 
   explicit Labelling(const LabellingConfig& cfg) : cfg_(cfg) {
     check_config<Params>(cfg);
@@ -111,9 +113,15 @@ class Labelling {
   bool error() const { return err_sticky_; }
   Phase phase() const { return phase_; }
 
-  /// Second-pass support (not part of the hardware): if set, S1 writes each pixel's node + 1
-  /// (0 = none) at y * width + x; after kResolve, root(node) gives its object's root.
-  void set_node_map(std::vector<std::int32_t>* m) { ram_.node_map = m; }
+  /// Second-pass support (not part of the hardware): if set, *m holds each pixel's node + 1
+  /// (0 = none) at y * width + x of the frame being emitted, and root(node) its object's root,
+  /// both from the end of its Resolve until the next frame's (S1 writes a working copy, since
+  /// the next frame streams in during Emit).
+  void set_node_map(std::vector<std::int32_t>* m) {
+    node_map_ = m;
+    live_map_.assign(m ? m->size() : 0, 0);
+    ram_.node_map = m ? &live_map_ : nullptr;
+  }
   int root(int node) const { return root_ram_[node]; }
 
   /// One clock edge with the inputs of this clock.
@@ -127,6 +135,7 @@ class Labelling {
     // decision looks at the registers of before the edge (rd_, r1_, ...).
     Reads rd = rd_;
     ParentPorts pp;
+    const bool emitting = emitting_;  // Emit's clock sees the registers of before the edge
     switch (phase_) {
       case kInit:
         if (++init_ == kInitClocks) phase_ = kFrame;
@@ -141,10 +150,8 @@ class Labelling {
       case kResolve:
         resolve_clock(rd, pp);
         break;
-      case kEmit:
-        emit_clock(out_en, rd);
-        break;
     }
+    if (emitting) emit_clock(out_en, rd);
     if (pp.rd) rd.parent = ram_.parent[pp.rd_addr];
     if (pp.wr) ram_.parent[pp.wr_addr] = pp.wr_data;
     rd_ = rd;
@@ -205,7 +212,7 @@ class Labelling {
     }
     if (drained) {
       if (N == 1) {
-        start_resolve();
+        if (!emitting_) start_resolve();  // the last frame's Emit still reads the sums
       } else {
         phase_ = kBorder;
         border_row_ = 0;
@@ -275,7 +282,7 @@ class Labelling {
     b1_valid_ = read;
     const bool pop = uf_.clock(queue_, rd_.parent, pp);
     queue_.clock(pop, pushes, n_push);
-    if (done) start_resolve();
+    if (done && !emitting_) start_resolve();  // the last frame's Emit still reads the sums
   }
 
   void start_resolve() {
@@ -289,7 +296,7 @@ class Labelling {
     // R0: the next node; read its parent[].
     R1 r1_next;
     int node = 0;
-    if (next_node(node)) {
+    if (next_node(node, true)) {
       r1_next = {true, node};
       pp.rd = true;
       pp.rd_addr = node;
@@ -333,10 +340,7 @@ class Labelling {
       acc_[r3_.root] = v;
       afwd_next = {true, r3_.root, v};
     }
-    if (done) {
-      phase_ = kEmit;
-      sweep_ = {true, 0, 0};
-    }
+    if (done) start_emit();
     r1_ = r1_next;
     r2_ = r2_next;
     r3_ = r3_next;
@@ -345,10 +349,12 @@ class Labelling {
   }
 
   /// Steps the sweep; returns whether this clock yields a node (an empty tile yields none).
-  bool next_node(int& node) {
+  /// Resolve's sweep reads the lanes' label counts and copies them for Emit's.
+  bool next_node(int& node, bool resolve) {
     if (!sweep_.active) return false;
     const int t = sweep_.tile;
-    const int count = ram_.count[t];
+    const int count = resolve ? ram_.count[t] : emit_count_[t];
+    if (resolve) emit_count_[t] = count;
     const bool yields = count > 0;
     node = t * L + sweep_.label;
     if (yields && sweep_.label + 1 < count) {
@@ -360,7 +366,21 @@ class Labelling {
     return yields;
   }
 
-  // ---------------------------------------------------------------- kEmit
+  /// The end of Resolve: Emit takes the frame's flags, the stage the next frame.
+  void start_emit() {
+    emitting_ = true;
+    sweep_ = {true, 0, 0};
+    emit_tile_overflow_ = tile_overflow_;
+    emit_err_ = err_frame_;
+    if (node_map_) *node_map_ = live_map_;
+    phase_ = kFrame;
+    ram_.count.fill(0);
+    tile_overflow_ = err_frame_ = false;
+    for (Lane& lane : lanes_) lane.end_frame();
+    border_has_last_.fill(false);
+  }
+
+  // ---------------------------------------------------------------- Emit
   void emit_clock(bool out_en, Reads& rd) {
     const bool swept = !sweep_.active && !e1_.valid;
     bool consumed = !e1_.valid;
@@ -381,18 +401,21 @@ class Labelling {
     if (!consumed) return;  // the read registers hold the stalled node's words
     E1 e1_next;
     int node = 0;
-    if (next_node(node)) {
+    if (next_node(node, false)) {
       e1_next = {true, node};
       rd.root = root_ram_[node];
       rd.acc = acc_[node];
     } else if (swept && out_en) {  // all nodes out: the status word
       FrameStatus st;
       st.objects = static_cast<std::uint32_t>(emitted_);
-      st.tile_overflow = tile_overflow_;
+      st.tile_overflow = emit_tile_overflow_;
       st.object_overflow = object_overflow_;
-      st.stream_error = err_frame_;
+      st.stream_error = emit_err_;
       load_out(LabelWord{true, {}, st}, true);
-      end_frame();
+      emitting_ = false;
+      e1_ = {};
+      emitted_ = 0;
+      object_overflow_ = false;
       return;
     }
     e1_ = e1_next;
@@ -402,16 +425,6 @@ class Labelling {
     out_valid_ = true;
     out_.data = w;
     out_.last = last;
-  }
-
-  void end_frame() {
-    phase_ = kFrame;
-    e1_ = {};
-    ram_.count.fill(0);
-    emitted_ = 0;
-    tile_overflow_ = object_overflow_ = err_frame_ = false;
-    for (Lane& lane : lanes_) lane.end_frame();
-    border_has_last_.fill(false);
   }
 
   struct R1 {
@@ -442,8 +455,13 @@ class Labelling {
   bool in_frame_ = false;
   int x_ = 0, y_ = 0, lane_ = 0, lane_col_ = 0;
   bool err_pending_ = false, err_frame_ = false, err_sticky_ = false;
-  bool tile_overflow_ = false, object_overflow_ = false;
+  bool tile_overflow_ = false;
+  // Emit: its frame's flags and label counts, objects sent.
+  bool emitting_ = false, emit_tile_overflow_ = false, emit_err_ = false, object_overflow_ = false;
   int emitted_ = 0;
+  std::array<int, kTiles> emit_count_{};
+  std::vector<std::int32_t>* node_map_ = nullptr;  // second pass, not hardware
+  std::vector<std::int32_t> live_map_;
   // Lanes, and with lanes their FIFOs and the pixel each takes next from its FIFO's head.
   std::array<Lane, N> lanes_{};
   std::array<RegFifo<LaneBeat, Params::kLaneFifo>, N> fifo_{};

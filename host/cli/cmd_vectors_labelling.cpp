@@ -306,8 +306,7 @@ std::vector<FrameOut> run_model(const Preset& p, const std::vector<InBeat>& beat
       if (!o.out.data.is_status) {
         f.objects.push_back(o.out.data.object);
       } else {
-        // The next frame's first pixel reaches the node map two clocks from now at the
-        // earliest: this one's nodes and roots are still there.
+        // The node map and the roots stay this frame's until the next frame's Resolve.
         f.status = o.out.data.status;
         second_pass(model->kernel(), node_map, f);
         frames.emplace_back();

@@ -17,9 +17,11 @@
 //   Border   (lanes only) every row: the two pixels either side of each strip border that join
 //            queue an edge for a merge unit over the whole node space
 //   Resolve  every used node in ascending order (R0 .. R3): its root (parents point to smaller
-//            nodes, so the parent's root is already known) and its descriptor into the root's
-//   Emit     every used node again (E0, E1): roots of at least cfg_min_area_i pixels leave as
-//            objects, up to MaxObjects; then the status word with out_last_o
+//            nodes, so the parent's root is already known) and its descriptor into the root's;
+//            the sweep copies each tile's label count for Emit. Then the next frame may start
+// Emit runs alongside the next frame (it reads only the root and sum RAMs, which the next
+// frame's Resolve waits for): every used node again (E0, E1); roots of at least cfg_min_area_i
+// pixels leave as objects, up to MaxObjects; then the status word with out_last_o.
 // Every RAM is a scw_ram_sdp with a registered read (read-first: a read in the clock of a write
 // to the same address returns the old word); where the model's next stage needs that word it
 // forwards the previous clock's write, as the model does.
@@ -109,7 +111,7 @@ module scw_labelling #(
   end
 
   // Descriptors (hls::labelling::Object) are scw_pkg::label_desc_t.
-  typedef enum logic [2:0] {PhInit, PhFrame, PhDrain, PhBorder, PhResolve, PhEmit} phase_e;
+  typedef enum logic [2:0] {PhInit, PhFrame, PhDrain, PhBorder, PhResolve} phase_e;
 
   // ---- registers ---------------------------------------------------------------------------
   phase_e phase_q, phase_d;
@@ -120,8 +122,11 @@ module scw_labelling #(
   logic [YW-1:0] y_q, y_d;
   logic [LaneSW-1:0] lane_q, lane_d;
   logic err_pending_q, err_pending_d, err_frame_q, err_frame_d, err_sticky_q, err_sticky_d;
-  logic tile_ovf_q, tile_ovf_d, obj_ovf_q, obj_ovf_d;
+  logic tile_ovf_q, tile_ovf_d;
+  // Emit: its frame's flags and label counts, objects sent
+  logic emit_q, emit_d, emit_tile_ovf_q, emit_err_q, obj_ovf_q, obj_ovf_d;
   logic [ObjW-1:0] emitted_q, emitted_d;
+  logic [CntW-1:0] emit_cnt_q [Tiles];
   // the strips, measured in Init: every lane's but the last is strip_q pixels wide
   logic [15:0] strip_q;
   // R3's write into acc last clock
@@ -145,13 +150,12 @@ module scw_labelling #(
   logic [OutW-1:0] out_data_q, out_data_d;
 
   // ---- phases ------------------------------------------------------------------------------
-  logic ph_init, ph_frame, ph_pixels, ph_border, ph_resolve, ph_emit;
+  logic ph_init, ph_frame, ph_pixels, ph_border, ph_resolve;
   assign ph_init    = phase_q == PhInit;
   assign ph_frame   = phase_q == PhFrame;
   assign ph_pixels  = (phase_q == PhFrame) || (phase_q == PhDrain);
   assign ph_border  = phase_q == PhBorder;
   assign ph_resolve = phase_q == PhResolve;
-  assign ph_emit    = phase_q == PhEmit;
   logic drained;
 
   // ---- the stage's ports into the lanes' banks (Init, Border, Resolve) ---------------------
@@ -540,10 +544,13 @@ module scw_labelling #(
   assign r3_value = (r3_root_q == r3_node_q) ? desc_rd : r3_merged;
 
   // ---- the node sweep (Resolve and Emit): used nodes ascending, an empty tile costs a clock -
+  // Resolve reads the lanes' label counts and copies them for Emit, whose frame they then leave.
   logic sw_yields, sw_step, sw_start;
   logic [NodeW-1:0] sw_node;
+  logic [CntW-1:0] sw_cnt;
 
-  assign sw_yields = sweep_active_q && (sw_count != '0);
+  assign sw_cnt    = ph_resolve ? sw_count : emit_cnt_q[sweep_tile_q];
+  assign sw_yields = sweep_active_q && (sw_cnt != '0);
   assign sw_node   = NodeW'(N1W'(sweep_tile_q) * LabelsN1 + N1W'(sweep_label_q));
 
   always_comb begin
@@ -555,7 +562,7 @@ module scw_labelling #(
       sweep_tile_d   = '0;
       sweep_label_d  = '0;
     end else if (sw_step && sweep_active_q) begin
-      if (sw_yields && ((CntW + 1)'(sweep_label_q) + 1'b1 < (CntW + 1)'(sw_count))) begin
+      if (sw_yields && ((CntW + 1)'(sweep_label_q) + 1'b1 < (CntW + 1)'(sw_cnt))) begin
         sweep_label_d = sweep_label_q + 1'b1;
       end else begin
         sweep_label_d = '0;
@@ -596,20 +603,21 @@ module scw_labelling #(
   assign swept        = !sweep_active_q && !e1_valid_q;
   assign is_object    = (root_rd == e1_node_q) && (acc_rd[31:0] >= cfg_min_area_i);  // area
   assign objects_full = emitted_q >= ObjW'(MaxObjects);
-  assign emit_object  = ph_emit && e1_valid_q && is_object && !objects_full && out_en;
+  assign emit_object  = emit_q && e1_valid_q && is_object && !objects_full && out_en;
   // The read registers hold a node that waits for the output register.
   assign consumed     = !e1_valid_q || !is_object || objects_full || out_en;
-  assign emit_read    = ph_emit && consumed && sw_yields;
-  assign emit_status  = ph_emit && consumed && !sw_yields && swept && out_en;
-  assign e1_valid_d   = ph_emit && consumed ? sw_yields : e1_valid_q;
-  assign e1_node_d    = ph_emit && consumed ? sw_node : e1_node_q;
+  assign emit_read    = emit_q && consumed && sw_yields;
+  assign emit_status  = emit_q && consumed && !sw_yields && swept && out_en;
+  assign e1_valid_d   = emit_q && consumed ? sw_yields : e1_valid_q;
+  assign e1_node_d    = emit_q && consumed ? sw_node : e1_node_q;
 
   // ---- control -----------------------------------------------------------------------------
   assign drained   = (phase_q == PhDrain) && lanes_idle && (fifo_valid == '0);
-  assign frame_end = emit_status;
-  assign sw_start  = (Lanes == 1 ? drained : ph_border && border_done) ||
-                     (ph_resolve && res_done);
-  assign sw_step   = ph_resolve || (ph_emit && consumed);
+  assign frame_end = ph_resolve && res_done;
+  // Resolve waits for the last frame's Emit, which still reads the sums.
+  assign sw_start  = ((Lanes == 1 ? drained : ph_border && border_done) && !emit_q) ||
+                     frame_end;
+  assign sw_step   = ph_resolve || (emit_q && consumed);
 
   always_comb begin
     phase_d       = phase_q;
@@ -618,8 +626,13 @@ module scw_labelling #(
     err_frame_d   = err_frame_q;
     err_sticky_d  = err_sticky_q;
     tile_ovf_d    = tile_ovf_q || (|lane_ovf);
-    obj_ovf_d     = obj_ovf_q || (ph_emit && e1_valid_q && is_object && objects_full);
+    emit_d        = emit_q && !emit_status;
+    obj_ovf_d     = obj_ovf_q || (emit_q && e1_valid_q && is_object && objects_full);
     emitted_d     = emitted_q + ObjW'(emit_object);
+    if (emit_status) begin
+      emitted_d = '0;
+      obj_ovf_d = 1'b0;
+    end
     unique case (phase_q)
       PhInit: begin
         if (init_q == InitW'(InitClocks - 1)) phase_d = PhFrame;
@@ -648,20 +661,19 @@ module scw_labelling #(
           in_frame_d   = 1'b0;
           phase_d      = PhDrain;
         end
-        if (drained) phase_d = (Lanes == 1) ? PhResolve : PhBorder;
+        if (drained) begin
+          if (Lanes > 1) phase_d = PhBorder;
+          else if (!emit_q) phase_d = PhResolve;
+        end
       end
       PhBorder: begin
-        if (border_done) phase_d = PhResolve;
+        if (border_done && !emit_q) phase_d = PhResolve;
       end
       PhResolve: begin
-        if (res_done) phase_d = PhEmit;
-      end
-      PhEmit: begin
-        if (emit_status) begin
+        if (res_done) begin  // Emit takes the frame's flags, the stage the next frame
           phase_d     = PhFrame;
-          emitted_d   = '0;
+          emit_d      = 1'b1;
           tile_ovf_d  = 1'b0;
-          obj_ovf_d   = 1'b0;
           err_frame_d = 1'b0;
         end
       end
@@ -679,9 +691,9 @@ module scw_labelling #(
       out_data_d = '0;
       out_data_d[0] = 1'b1;
       out_data_d[32:1] = 32'(emitted_q);
-      out_data_d[33] = tile_ovf_q;
+      out_data_d[33] = emit_tile_ovf_q;
       out_data_d[34] = obj_ovf_q;
-      out_data_d[35] = err_frame_q;
+      out_data_d[35] = emit_err_q;
     end
     if (out_load) out_valid_d = 1'b1;
   end
@@ -753,6 +765,7 @@ module scw_labelling #(
       err_frame_q    <= 1'b0;
       err_sticky_q   <= 1'b0;
       tile_ovf_q     <= 1'b0;
+      emit_q         <= 1'b0;
       obj_ovf_q      <= 1'b0;
       emitted_q      <= '0;
       afwd_valid_q   <= 1'b0;
@@ -771,6 +784,7 @@ module scw_labelling #(
       err_frame_q    <= err_frame_d;
       err_sticky_q   <= err_sticky_d;
       tile_ovf_q     <= tile_ovf_d;
+      emit_q         <= emit_d;
       obj_ovf_q      <= obj_ovf_d;
       emitted_q      <= emitted_d;
       afwd_valid_q   <= ph_resolve && r3_valid_q;
@@ -781,6 +795,13 @@ module scw_labelling #(
       r3_valid_q     <= r3_valid_d;
       e1_valid_q     <= e1_valid_d;
       out_valid_q    <= out_valid_d;
+    end
+  end
+
+  // Emit's label counts, copied as Resolve's sweep passes each tile.
+  for (genvar t = 0; t < Tiles; t++) begin : gen_emit_cnt
+    always_ff @(posedge clk_i) begin
+      if (ph_resolve && sweep_active_q && sweep_tile_q == TileW'(t)) emit_cnt_q[t] <= sw_count;
     end
   end
 
@@ -803,6 +824,10 @@ module scw_labelling #(
     r3_node_q     <= r3_node_d;
     r3_root_q     <= r3_root_d;
     e1_node_q     <= e1_node_d;
+    if (frame_end) begin
+      emit_tile_ovf_q <= tile_ovf_q;
+      emit_err_q      <= err_frame_q;
+    end
     if (out_load) begin
       out_data_q <= out_data_d;
       out_last_q <= out_last_d;

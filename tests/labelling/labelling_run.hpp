@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -156,6 +157,64 @@ void check_broken_streams(const LabellingConfig& cfg, const DispMap& good, std::
     if (s.first_whole) CHECK(raster_sorted(f[0].objects) == raster_sorted(f[1].objects));
     check_against_reference({f[1]}, {good}, cfg);
   }
+}
+
+/// A run with every beat offered and the output taken, except for `hold` cycles from the first
+/// object word on; per frame, the cycle its first beat was taken and its status word left.
+struct HeldRun {
+  std::vector<FrameOut> frames;
+  std::vector<std::int64_t> first_in, status_out;
+  std::vector<sim::StreamOutputs<LabelPacket>> trace;  // every cycle's outputs, to compare twins
+};
+
+template <typename Model>
+HeldRun run_with_held_output(Model& m, const std::vector<typename Model::in_type>& beats,
+                             std::size_t frames_n, std::int64_t hold) {
+  HeldRun r;
+  std::vector<LabelPacket> out;
+  std::size_t next = 0;
+  std::int64_t hold_from = -1;
+  for (std::int64_t c = 0; r.status_out.size() < frames_n; ++c) {
+    REQUIRE(c < 200'000);  // a stage that never finishes fails here, not by hanging
+    const bool valid = next < beats.size();
+    const bool ready = hold_from < 0 || c >= hold_from + hold;
+    const auto o = m.eval(valid, valid ? beats[next] : typename Model::in_type{}, ready);
+    r.trace.push_back(o);
+    if (valid && o.in_ready && beats[next].sof) r.first_in.push_back(c);
+    if (o.out_valid && hold_from < 0) hold_from = c;
+    if (o.out_valid && ready) {
+      out.push_back(o.out);
+      if (o.out.last) r.status_out.push_back(c);
+    }
+    m.tick();
+    if (valid && o.in_ready) ++next;
+  }
+  r.frames = split_frames(out);
+  return r;
+}
+
+/// `maps` (at least three, the first with objects) back to back, twice: output always taken,
+/// and held from the first object word for longer than two frames. The next frame streams in
+/// while the last one's objects leave; with the output held, the frame after waits for them
+/// (its Resolve would overwrite the sums being sent); the frames equal the reference. Returns
+/// both runs, for twins to compare.
+template <typename Model, typename MakeModel>
+std::vector<HeldRun> check_emit_overlap(MakeModel make, const std::vector<DispMap>& maps,
+                                        const LabellingConfig& cfg) {
+  const auto beats = map_beats<typename Model::in_type>(maps);
+  const std::int64_t frame_beats = static_cast<std::int64_t>(beats.size() / maps.size());
+  std::vector<HeldRun> runs;
+  for (const std::int64_t hold : {std::int64_t{0}, 3 * frame_beats}) {
+    INFO("output held for " << hold << " cycles");
+    auto m = make();
+    auto r = run_with_held_output(*m, beats, maps.size(), hold);
+    check_against_reference(r.frames, maps, cfg);
+    REQUIRE(r.first_in.size() == maps.size());
+    CHECK(r.first_in[1] < r.status_out[0]);  // frame 1 came in while frame 0's objects left
+    if (hold > 0) CHECK(r.first_in[2] > r.status_out[0]);  // frame 1's Resolve waited
+    runs.push_back(std::move(r));
+  }
+  return runs;
 }
 
 }  // namespace scw::test

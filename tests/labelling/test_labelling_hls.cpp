@@ -175,6 +175,14 @@ TEST_CASE("labelling: more objects than MaxObjects are flagged, the next frame c
   check_against_reference({frames[1]}, {maps[1]}, cfg);
 }
 
+TEST_CASE("labelling: the next frame streams in while the objects of the last leave", "[hls]") {
+  using Params = LabellingParams<32, 16, 2, 2, 64, 256>;  // room for the dots' 128 objects
+  using Model = scw::sim::LabellingModel<Params>;
+  const auto cfg = grid_config(32, 16, 2, 2, 0, 1);
+  const std::vector<DispMap> maps{dots_map(32, 16), spiral_map(32, 16), staircase_map(32, 16)};
+  check_emit_overlap<Model>([&] { return std::make_unique<Model>(cfg); }, maps, cfg);
+}
+
 TEST_CASE("labelling: broken frames are flagged and the next frame is correct", "[hls]") {
   check_broken_streams<LabellingParams<32, 16, 2, 2, 64, 64>>(grid_config(32, 16, 2, 2, 0, 1),
                                                               nested_u_map(32, 16), 100, 40);

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -259,4 +260,40 @@ TEST_CASE("scw_labelling with lanes flags broken frames like the model, the next
       check_against_reference({r.frames.back()}, {good}, cfg);
     }
   }
+}
+
+namespace {
+
+/// The overlap check on the model and the RTL: every cycle's handshake and words equal.
+template <typename VM, typename Params>
+void check_emit_overlap_twins(int w, int h, int tiles) {
+  using Cpp = scw::sim::LabellingModel<Params>;
+  using Rtl = scw::sim::LabellingRtl<VM, Params>;
+  const auto cfg = grid_config(w, h, tiles, 2, 0, 1);
+  const std::vector<DispMap> maps{dots_map(w, h), spiral_map(w, h), staircase_map(w, h)};
+  const auto rc = check_emit_overlap<Cpp>([&] { return std::make_unique<Cpp>(cfg); }, maps, cfg);
+  auto make_rtl = [&] {
+    return std::make_unique<Rtl>(scw::sim::make_labelling_rtl<VM, Params>("labelling", cfg));
+  };
+  const auto rr = check_emit_overlap<Rtl>(make_rtl, maps, cfg);
+  REQUIRE(rc.size() == rr.size());
+  for (std::size_t i = 0; i < rc.size(); ++i) {
+    REQUIRE(rc[i].trace.size() == rr[i].trace.size());
+    for (std::size_t c = 0; c < rc[i].trace.size(); ++c) {
+      const auto& a = rc[i].trace[c];
+      const auto& b = rr[i].trace[c];
+      INFO("run " << i << ", cycle " << c);
+      REQUIRE(a.in_ready == b.in_ready);
+      REQUIRE(a.out_valid == b.out_valid);
+      if (a.out_valid) REQUIRE(a.out == b.out);
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("scw_labelling sends the objects of a frame while the next streams in, like the model",
+          "[labelling][rtl]") {
+  check_emit_overlap_twins<Vlabelling_a, ParamsA>(32, 24, 2);
+  check_emit_overlap_twins<Vlabelling_l4, ParamsL4>(32, 24, 4);
 }
