@@ -11,6 +11,9 @@
 #   --cells         print every cell type and count, not only the summary
 #   --no-ltp        skip the logic-depth measurement (ltp) on very large designs
 #   --path FILE     write the deepest path (ltp, cut at DSPs) cell by cell to FILE
+#   --no-sta        skip static timing (sta) on very large designs
+#   --sta-path FILE write the worst timing path (Yosys sta, cell by cell) to FILE
+#   --max-sta-ps N  fail (exit 3) when the worst register-to-register path is longer than N ps
 #
 # Reads the files listed by scripts/rtl_lint.sh --files <module>, applies the parameters
 # with chparam, runs `synth_xilinx -flatten -top <module>`, `stat`, and `ltp -noff` with
@@ -20,12 +23,17 @@
 # LUT counts LUT1..LUT6 (and LUT6_2), FF counts FD* cells, logic_levels is the longest
 # register-to-register (or port) path in cells (Yosys `ltp`: LUTs, CARRY4s, MUXF7/8 each
 # count one; flip-flops, SRL shift registers and block RAMs end a path); logic_levels_dsp_cut also cuts paths at DSP48E1s, whose packed pipeline registers
-# ltp cannot see. Environment: YOSYS (default: yosys on PATH). Needs only bash, grep, sed, awk.
+# ltp cannot see. sta_ps is the worst path in ps from Yosys `sta` with the 7-series cell delays
+# of +/xilinx/cells_sim.v read again with their specify blocks (prjxray numbers, zero routing),
+# sta_from/sta_to its start and end cells (docs/timing.md); the run fails (exit 1) when a cell
+# has no timing arcs or the worst path does not end at a flip-flop, block RAM, DSP or shift
+# register, rather than print a number that left part of the design out.
+# Environment: YOSYS (default: yosys on PATH). Needs only bash, grep, sed, awk.
 set -euo pipefail
 
 usage() {
   echo "usage: scripts/rtl_synth.sh <module> [Param=value ...] [--log FILE] [--expect-bram]" \
-    "[--max-ff N] [--cells] [--no-ltp] [--path FILE]" >&2
+    "[--max-ff N] [--cells] [--no-ltp] [--path FILE] [--no-sta] [--sta-path FILE] [--max-sta-ps N]" >&2
   exit 2
 }
 
@@ -40,6 +48,9 @@ max_ff=200
 show_cells=0
 run_ltp=1
 path_out=""
+run_sta=1
+sta_path_out=""
+max_sta_ps=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --log) [[ $# -ge 2 ]] || usage; log="$2"; shift 2 ;;
@@ -50,6 +61,9 @@ while [[ $# -gt 0 ]]; do
     --cells) show_cells=1; shift ;;
     --no-ltp) run_ltp=0; shift ;;
     --path) [[ $# -ge 2 ]] || usage; path_out="$2"; shift 2 ;;
+    --no-sta) run_sta=0; shift ;;
+    --sta-path) [[ $# -ge 2 ]] || usage; sta_path_out="$2"; shift 2 ;;
+    --max-sta-ps) [[ $# -ge 2 ]] || usage; max_sta_ps="$2"; shift 2 ;;
     -h|--help) usage ;;
     -*) echo "rtl_synth: unknown option $1" >&2; usage ;;
     *=*)
@@ -65,6 +79,8 @@ while [[ $# -gt 0 ]]; do
 done
 [[ -n "$module" ]] || usage
 [[ "$max_ff" =~ ^[0-9]+$ ]] || { echo "rtl_synth: --max-ff needs a number" >&2; exit 2; }
+[[ -z "$max_sta_ps" || "$max_sta_ps" =~ ^[0-9]+$ ]] ||
+  { echo "rtl_synth: --max-sta-ps needs a number of ps, got '${max_sta_ps}'" >&2; exit 2; }
 
 yosys="${YOSYS:-yosys}"
 if ! command -v "$yosys" > /dev/null 2>&1; then
@@ -123,6 +139,12 @@ done
     # registers), and ltp walks through a DSP as if it were logic.
     echo "tee -q -o ltp_dsp.txt ltp -noff t:FD* t:SRL* t:RAMB* t:IBUF t:OBUF t:BUFG t:DSP48E1 %u %u %u %u %u %u %n"
   fi
+  if [[ $run_sta -eq 1 ]]; then
+    # The cells again, now with their specify blocks: without them sta has no delay for a
+    # CARRY4, DSP48E1 or block RAM and silently walks around them.
+    echo "read_verilog -lib -specify +/xilinx/cells_sim.v"
+    echo "tee -q -o sta.txt sta"
+  fi
 } > "$work/synth.ys"
 
 label="$module${params[*]+ ${params[*]}}"
@@ -177,13 +199,54 @@ if [[ $run_ltp -eq 1 ]]; then
   fi
 fi
 
+sta_ps="n/a"
+sta_from="n/a"
+sta_to="n/a"
+if [[ $run_sta -eq 1 ]]; then
+  if grep -q 'has no timing arcs' "$log"; then
+    keep_work=$own_log
+    echo "rtl_synth: ${label}: sta: cells without timing arcs, the path would leave them out:" >&2
+    grep 'has no timing arcs' "$log" | sort -u | head -n 10 >&2
+    exit 1
+  fi
+  sta_ps="$(sed -n "s/^Latest arrival time in '.*' is \([0-9]*\):.*/\1/p" "$work/sta.txt" |
+    head -n 1)"
+  if [[ -z "$sta_ps" ]]; then
+    keep_work=$own_log
+    echo "rtl_synth: ${label}: sta printed no latest arrival time (log: ${log})" >&2
+    exit 1
+  fi
+  # The path, latest first: "<ps> <cell> (<TYPE>.<from>-><to>)" or "<ps> <cell> (<TYPE>.<pin>)"
+  # for the endpoint, each followed by the net it drives.
+  path="$(awk '/^Latest arrival time/ { on = 1; next } on && NF == 0 { exit }
+               on && $1 ~ /^[0-9]+$/ && $NF ~ /^\(/ { print $1, $NF }' "$work/sta.txt")"
+  sta_to="$(printf '%s\n' "$path" | head -n 1 | awk '{ gsub(/[()]/, "", $2); print $2 }')"
+  # The start: the first cell after the clock tree (BUFG, IBUF) going back from the end.
+  sta_from="$(printf '%s\n' "$path" |
+    awk '{ gsub(/[()]/, "", $2) } $2 !~ /^(BUFG|IBUF)\./ { s = $2 } END { print s }')"
+  if [[ ! "$sta_to" =~ ^(FD[A-Z]*|RAMB(18|36)E1|DSP48E1|SRLC?[0-9]+E)\. ]]; then
+    keep_work=$own_log
+    echo "rtl_synth: ${label}: sta's worst path ends at '${sta_to}', not at a flip-flop," \
+      "block RAM, DSP or shift register: the number would not be a clock period" >&2
+    exit 1
+  fi
+  [[ -z "$sta_path_out" ]] || cp "$work/sta.txt" "$sta_path_out"
+fi
+
 if [[ $show_cells -eq 1 || $expect_bram -eq 1 ]]; then
   echo "cells of ${label} after synth_xilinx -flatten:"
   printf '%s\n' "$cells" | awk '{ printf "  %-12s %8d\n", $1, $2 }'
 fi
 echo "${label}: LUT=${lut} FF=${ff} RAMB18=${ramb18} RAMB36=${ramb36} DSP=${dsp}" \
   "LUTRAM=${lutram} SRL=${srl} logic_levels=${levels} logic_levels_dsp_cut=${levels_dsp}" \
-  "yosys_s=${secs}"
+  "sta_ps=${sta_ps} sta_from=${sta_from} sta_to=${sta_to} yosys_s=${secs}"
+if [[ -n "$max_sta_ps" && "$sta_ps" =~ ^[0-9]+$ && $sta_ps -gt $max_sta_ps ]]; then
+  echo "rtl_synth: ${label}: TIMING FAILED: worst path ${sta_ps} ps > ${max_sta_ps} ps," \
+    "from ${sta_from} to ${sta_to}:" >&2
+  awk '/^Latest arrival time/ { on = 1 } on && NF == 0 { exit } on' "$work/sta.txt" |
+    sed -n '1,80p' >&2
+  exit 3
+fi
 
 if [[ $expect_bram -eq 1 ]]; then
   fail=""
