@@ -22,7 +22,7 @@ struct WarningParams {
 /// Clocks from an input word's acceptance to its effect on the frame result (the RTL's
 /// pipeline depth, `Latency` in scw_warning): table read, b/d, coordinates, squares, square root,
 /// tunnel test, severity, fold. Shared by the model, the RTL and sim/.
-inline constexpr int kLatency = 36;
+inline constexpr int kLatency = 47;
 
 /// Run-time configuration (the RTL's cfg_* ports), stable while frames stream. Lengths in mm.
 /// host/warning/setup.hpp fills it from metres and pixels (to_fixed) and documents the defaults.

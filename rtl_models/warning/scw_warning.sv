@@ -9,7 +9,8 @@
 // into the frame's accumulator; the word that closes the frame (its status word, or a `last`
 // without one) loads the output register on that edge. Stages:
 //   S0              the word's fields (a status word's in the same bits), its flags, and the
-//                   reciprocal table read at min(d_max, table end) (scw_warning_recip)
+//                   reciprocal table read at min(d_max, table end) (scw_warning_recip; its
+//                   output register holds the entry in S1)
 //   S1 .. S(L-2)    the per-object arithmetic (scw_warning_object) beside the fields
 //   fold            obstacles counted; the deciding one is the worse severity, then the smaller
 //                   judged distance, then the earlier; on close the result is the accumulator
@@ -53,7 +54,7 @@ module scw_warning #(
   output logic               out_last_o
 );
   // hls::warning::kLatency: clocks from a word's acceptance to its effect on the result.
-  localparam int unsigned Latency   /*verilator public*/ = 36;
+  localparam int unsigned Latency   /*verilator public*/ = 47;
   localparam int unsigned TableSize /*verilator public*/ = 16 * MaxDisparityPx;
   localparam int unsigned Stages = Latency - 1;  // S0 .. S(Stages-1), then the fold
   localparam int unsigned AddrW  = $clog2(TableSize);
@@ -100,9 +101,9 @@ module scw_warning #(
     end
   end
 
-  logic [28:0] s0_recip;
+  logic [28:0] s1_recip;
   scw_warning_recip #(.Entries(TableSize)) u_recip (
-    .clk_i, .en_i(en), .addr_i(addr), .data_o(s0_recip)
+    .clk_i, .en_i(en), .addr_i(addr), .data_o(s1_recip)
   );
 
   // ---- S1 .. S(Stages-1) --------------------------------------------------------------------
@@ -138,7 +139,7 @@ module scw_warning #(
     .cfg_medium_mm_i,
     .cfg_near_mm_i,
     .cfg_min_height_mm_i,
-    .recip_i               (s0_recip),
+    .recip_i               (s1_recip),
     .closest_x_i           (s0_fields_q[0 +: 16]),
     .closest_y_i           (s0_fields_q[16 +: 16]),
     .x_min_i               (s0_fields_q[48 +: 16]),
@@ -174,8 +175,15 @@ module scw_warning #(
   assign st_objects = w_fields[31:0];
   assign st_flags   = w_fields[34:32];  // {stream_error, object_overflow, tile_overflow}
 
+  // Which obstacle decides, as one unsigned compare (a single carry chain into the enables of
+  // the whole accumulator): severity above the judged distance, whose sign bit is flipped (signed
+  // order) and the rest inverted (the smaller distance is the larger key).
+  logic [DW+1:0] w_key, key_q;
+  assign w_key = {w_sev, w_dj[DW-1], ~w_dj[DW-2:0]};
+  assign key_q = {sev_q, dj_q[DW-1], ~dj_q[DW-2:0]};
+
   always_comb begin
-    better = !best_q || w_sev > sev_q || (w_sev == sev_q && w_dj < dj_q);
+    better = !best_q || w_key > key_q;
     upd    = w_obj && w_obst && better;
     close  = w_valid && (w_status || w_last);
     st_err = st_flags[2] || !w_last || st_objects != {16'b0, objs_q};

@@ -2,12 +2,13 @@
 // Warning stage: a value held back a fixed number of pipeline enables (a shift register).
 `default_nettype none
 
-// No reset and one enable for the whole chain, so Yosys maps it to SRL shift registers instead
-// of Depth * Width flip-flops; whatever it holds after reset is masked by the stage's valid
-// pipeline.
+// No reset and one enable for the whole chain, so Yosys maps the first Depth - 1 steps to SRL
+// shift registers instead of flip-flops; whatever it holds after reset is masked by the stage's
+// valid pipeline. The last step is a flip-flop kept out of the SRL: an SRL's clock-to-output
+// (about 1.5 ns) would otherwise start the path through whatever logic reads q_o.
 module scw_warning_delay #(
   parameter int unsigned Width = 1,
-  parameter int unsigned Depth = 1  // >= 1
+  parameter int unsigned Depth = 4  // >= 1
 ) (
   input  logic             clk_i,
   input  logic             en_i,
@@ -18,9 +19,18 @@ module scw_warning_delay #(
     $error("scw_warning_delay: Width and Depth are at least 1");
   end
 
-  logic [Depth*Width-1:0] q;
-  always_ff @(posedge clk_i) begin
-    if (en_i) q <= (Depth * Width)'({q, d_i});
+  logic [Width-1:0] last;
+  if (Depth > 1) begin : gen_chain
+    logic [(Depth-1)*Width-1:0] q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) q <= ((Depth - 1) * Width)'({q, d_i});
+    end
+    assign last = q[(Depth-1)*Width-1 -: Width];
+  end else begin : gen_no_chain
+    assign last = d_i;
   end
-  assign q_o = q[Depth*Width-1 -: Width];
+
+  (* keep *) always_ff @(posedge clk_i) begin
+    if (en_i) q_o <= last;
+  end
 endmodule

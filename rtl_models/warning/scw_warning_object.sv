@@ -4,18 +4,23 @@
 
 // Bit for bit hls::warning::evaluate<Params>() for what the fold uses (obstacle, severity,
 // in_tunnel, too_close, distance and the judged distance), OutStages enabled clocks after the
-// inputs. The inputs are stage 0: the object's fields and flags as the top registered them, and
-// recip(min(d_max, table end)) from the table. Stages (register at the end of each):
-//   1 .. 3    S = (b * recip + 2^15) >> 16 (mm/px, Q.20); the seven pixel offsets (Q.4)
-//   4 .. 6    the seven coordinates (mm): rshift_round(S * offset, 24)
-//   7, 8      x^2, y^2, z^2; height, the box edges relative to the vehicle, then height >=
-//             min_height and the four tunnel margins
-//   9, 10     n = x^2 + y^2 + z^2; the gaps across and up, then the gap to the tunnel
-//   11 .. 25  isqrt_round(n) (scw_warning_sqrt); 11: in the tunnel, gap <= near
-//   26        distance = root - veh_z
-//   27        the thresholds (too close: judged at 0)
-//   28        severity
-//   29 ..     held back to OutStages
+// inputs. The inputs are stage 0: the object's fields and flags as the top registered them; the
+// table's recip(min(d_max, table end)) comes a clock later, at stage 1. Stages (register at the
+// end of each):
+//   1         the six pixel offsets (Q.4)
+//   2 .. 5    S = (b * recip + 2^15) >> 16 (mm/px, Q.20)
+//   6 .. 9    the seven coordinates (mm): rshift_round(S * offset, 24)
+//   10 .. 12  x^2, y^2, z^2; 10, 11: height, the box edges relative to the vehicle, then height
+//             >= min_height and the four tunnel margins
+//   12, 13    the gaps across and up, then the gap to the tunnel
+//   13, 14    n = x^2 + y^2 + z^2; 14: in the tunnel, gap <= near
+//   15 .. 42  isqrt_round(n) (scw_warning_sqrt, one root bit per clock)
+//   43        distance = root - veh_z
+//   44        the thresholds (too close: judged at 0)
+//   45        severity
+//   46 ..     held back to OutStages
+// Every DSP product has its M and P registers, and no carry chain spans more than one operand
+// (the widest are n's 58 bits): about 2.5 ns of logic per clock at most.
 // Ranges (every input, any configuration): |offset| < 2^20, S < 2^32, |coordinate| <= 2^28,
 // so products fit 53 bits, each coordinate 29 bits (the model's int32 casts never wrap),
 // n < 3 * 2^56 and the distance 29 bits. Objects that are not measurable run through with
@@ -23,7 +28,7 @@
 // cfg_* are static: registered here without reset (with what is derived from them), which keeps
 // them off every timing path.
 module scw_warning_object #(
-  parameter int unsigned OutStages = 34
+  parameter int unsigned OutStages = 45
 ) (
   input  logic               clk_i,
   input  logic               en_i,
@@ -41,8 +46,9 @@ module scw_warning_object #(
   input  logic [15:0]        cfg_medium_mm_i,
   input  logic [15:0]        cfg_near_mm_i,
   input  logic [15:0]        cfg_min_height_mm_i,
-  // stage 0
+  // stage 1
   input  logic [28:0]        recip_i,
+  // stage 0
   input  logic [15:0]        closest_x_i,
   input  logic [15:0]        closest_y_i,
   input  logic [15:0]        x_min_i,
@@ -59,10 +65,10 @@ module scw_warning_object #(
   output logic signed [28:0] distance_o,  // from the bumper
   output logic signed [28:0] judged_o     // 0 when too close, else distance_o
 );
-  localparam int unsigned Stages    = 28;  // stage of the severity
+  localparam int unsigned Stages    = 45;  // stage of the severity
   localparam int unsigned RootW     = 27;  // hls::warning::isqrt_round's loop
-  localparam int unsigned SqrtStart = 10;  // stage of n
-  localparam int unsigned SqrtLat   = (RootW + 1) / 2 + 1;
+  localparam int unsigned SqrtStart = 14;  // stage of n
+  localparam int unsigned SqrtLat   = RootW + 1;
   localparam int unsigned PxW       = 21;  // pixel offsets, Q.4 signed
   localparam int unsigned CW        = 29;  // coordinates, mm signed
   localparam int unsigned SqW       = 2 * CW - 1;
@@ -72,10 +78,10 @@ module scw_warning_object #(
   localparam int unsigned Lanes     = 7;   // x, y, z, x0, x1, y_top, y_bot
 
   if (OutStages < Stages) begin : gen_bad
-    $error("scw_warning_object: OutStages is at least 28");
+    $error("scw_warning_object: OutStages is at least 45");
   end
-  if (SqrtStart + SqrtLat != 25) begin : gen_bad_sqrt
-    $error("scw_warning_object: the square root must end at stage 25");
+  if (SqrtStart + SqrtLat != 42) begin : gen_bad_sqrt
+    $error("scw_warning_object: the square root must end at stage 42");
   end
 
   // ---- configuration ------------------------------------------------------------------------
@@ -113,13 +119,13 @@ module scw_warning_object #(
     med_nz_q <= cfg_medium_mm_i != '0;
   end
 
-  // ---- 1 .. 3: S = b / d, and the pixel offsets ---------------------------------------------
+  // ---- 1 .. 5: the pixel offsets, and S = b / d ---------------------------------------------
   logic signed [32:0] s_wide;
-  logic [31:0] s3;
+  logic [31:0] s5;
   scw_warning_mul #(.AW(21), .BW(29), .Split(16), .Shift(16), .OutW(33)) u_mul_s (
     .clk_i, .en_i, .a_i(base_q), .b_i(recip_i), .p_o(s_wide)
   );
-  assign s3 = s_wide[31:0];
+  assign s5 = s_wide[31:0];
 
   // 16 * coordinate, Q.4 signed; the offset +-16 c + k lies in -2^20 .. 2^20 - 1.
   function automatic logic signed [PxW-1:0] q4(input logic [15:0] c);
@@ -140,32 +146,32 @@ module scw_warning_object #(
       px_yb1 <= ext18(k_yb_q) - q4(y_max_i);
     end
   end
-  logic [6*PxW-1:0] px3;
-  scw_warning_delay #(.Width(6 * PxW), .Depth(2)) u_px_delay (
-    .clk_i, .en_i, .d_i({px_yb1, px_yt1, px_x11, px_x01, px_y1, px_x1}), .q_o(px3)
+  logic [6*PxW-1:0] px5;
+  scw_warning_delay #(.Width(6 * PxW), .Depth(4)) u_px_delay (
+    .clk_i, .en_i, .d_i({px_yb1, px_yt1, px_x11, px_x01, px_y1, px_x1}), .q_o(px5)
   );
 
-  // ---- 4 .. 6: coordinates ------------------------------------------------------------------
+  // ---- 6 .. 9: coordinates ------------------------------------------------------------------
   // Lane order x, y, z, x0, x1, y_top, y_bot; z's offset is the (static) focal length.
   logic [Lanes*PxW-1:0] px_lanes;
-  logic [Lanes*CW-1:0] c6;
-  assign px_lanes = {px3[5*PxW +: PxW], px3[4*PxW +: PxW], px3[3*PxW +: PxW], px3[2*PxW +: PxW],
-                     focal_q, px3[PxW +: PxW], px3[0 +: PxW]};
+  logic [Lanes*CW-1:0] c9;
+  assign px_lanes = {px5[5*PxW +: PxW], px5[4*PxW +: PxW], px5[3*PxW +: PxW], px5[2*PxW +: PxW],
+                     focal_q, px5[PxW +: PxW], px5[0 +: PxW]};
   for (genvar i = 0; i < Lanes; i++) begin : gen_coord
     logic signed [CW-1:0] c;
     scw_warning_mul #(.AW(PxW), .BW(32), .Split(17), .Shift(24), .OutW(CW)) u_mul (
-      .clk_i, .en_i, .a_i(px_lanes[i*PxW +: PxW]), .b_i(s3), .p_o(c)
+      .clk_i, .en_i, .a_i(px_lanes[i*PxW +: PxW]), .b_i(s5), .p_o(c)
     );
-    assign c6[i*CW +: CW] = c;
+    assign c9[i*CW +: CW] = c;
   end
-  logic signed [CW-1:0] x6, y6, z6, x06, x16, yt6, yb6;
-  assign {yb6, yt6, x16, x06, z6, y6, x6} = c6;
+  logic signed [CW-1:0] x9, y9, z9, x09, x19, yt9, yb9;
+  assign {yb9, yt9, x19, x09, z9, y9, x9} = c9;
 
-  // ---- 7, 8: squares, height, tunnel margins -----------------------------------------------
-  logic [SqW-1:0] sqx8, sqy8, sqz8;
-  scw_warning_square #(.XW(CW), .L(17)) u_sq_x (.clk_i, .en_i, .x_i(x6), .sq_o(sqx8));
-  scw_warning_square #(.XW(CW), .L(17)) u_sq_y (.clk_i, .en_i, .x_i(y6), .sq_o(sqy8));
-  scw_warning_square #(.XW(CW), .L(17)) u_sq_z (.clk_i, .en_i, .x_i(z6), .sq_o(sqz8));
+  // ---- 10 .. 12: squares, height, tunnel margins -------------------------------------------
+  logic [SqW-1:0] sqx12, sqy12, sqz12;
+  scw_warning_square #(.XW(CW), .L(17)) u_sq_x (.clk_i, .en_i, .x_i(x9), .sq_o(sqx12));
+  scw_warning_square #(.XW(CW), .L(17)) u_sq_y (.clk_i, .en_i, .x_i(y9), .sq_o(sqy12));
+  scw_warning_square #(.XW(CW), .L(17)) u_sq_z (.clk_i, .en_i, .x_i(z9), .sq_o(sqz12));
 
   function automatic logic signed [CW:0] ext_c(input logic signed [CW-1:0] v);
     ext_c = {v[CW-1], v};
@@ -177,31 +183,31 @@ module scw_warning_object #(
     ext_g = {v[CW], v};
   endfunction
 
-  logic signed [CW:0] height7, vx07, vx17, vyt7, vyb7;
+  logic signed [CW:0] height10, vx0_10, vx1_10, vyt10, vyb10;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      height7 <= ext_c(yt6) - ext_c(yb6);
-      vx07    <= ext_c(x06) - ext_16(vx_q);
-      vx17    <= ext_c(x16) - ext_16(vx_q);
-      vyt7    <= ext_c(yt6) - ext_16(vy_q);
-      vyb7    <= ext_c(yb6) - ext_16(vy_q);
+      height10 <= ext_c(yt9) - ext_c(yb9);
+      vx0_10   <= ext_c(x09) - ext_16(vx_q);
+      vx1_10   <= ext_c(x19) - ext_16(vx_q);
+      vyt10    <= ext_c(yt9) - ext_16(vy_q);
+      vyb10    <= ext_c(yb9) - ext_16(vy_q);
     end
   end
 
   // gx = max(0, vx0 - hw, -hw - vx1), gy = max(0, vy_bot - h, -vy_top)
-  logic signed [GW-1:0] g18, g28, g38, g48;
-  logic obst_h8;
+  logic signed [GW-1:0] g1_11, g2_11, g3_11, g4_11;
+  logic obst_h11;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      obst_h8 <= height7 >= $signed({{(CW + 1 - 16){1'b0}}, minh_q});
-      g18     <= ext_g(vx07) - $signed({{(GW - 16){1'b0}}, hw_q});
-      g28     <= $signed({{(GW - 17){nhw_q[16]}}, nhw_q}) - ext_g(vx17);
-      g38     <= ext_g(vyb7) - $signed({{(GW - 16){1'b0}}, th_q});
-      g48     <= -ext_g(vyt7);
+      obst_h11 <= height10 >= $signed({{(CW + 1 - 16){1'b0}}, minh_q});
+      g1_11    <= ext_g(vx0_10) - $signed({{(GW - 16){1'b0}}, hw_q});
+      g2_11    <= $signed({{(GW - 17){nhw_q[16]}}, nhw_q}) - ext_g(vx1_10);
+      g3_11    <= ext_g(vyb10) - $signed({{(GW - 16){1'b0}}, th_q});
+      g4_11    <= -ext_g(vyt10);
     end
   end
 
-  // ---- 9, 10: n and the gap -----------------------------------------------------------------
+  // ---- 12 .. 14: the gap, and n -------------------------------------------------------------
   function automatic logic [GW-2:0] max0(input logic signed [GW-1:0] a,
                                           input logic signed [GW-1:0] b);
     logic signed [GW-1:0] m;
@@ -209,81 +215,81 @@ module scw_warning_object #(
     max0 = m[GW-1] ? '0 : m[GW-2:0];
   endfunction
 
-  logic [NW-1:0] sxy9, n10;
-  logic [SqW-1:0] sqz9;
-  logic [GW-2:0] gx9, gy9, gap10;
+  logic [NW-1:0] sxy13, n14;
+  logic [SqW-1:0] sqz13;
+  logic [GW-2:0] gx12, gy12, gap13;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      sxy9  <= {1'b0, sqx8} + {1'b0, sqy8};
-      sqz9  <= sqz8;
-      gx9   <= max0(g18, g28);
-      gy9   <= max0(g38, g48);
-      n10   <= sxy9 + {1'b0, sqz9};
-      gap10 <= (gx9 > gy9) ? gx9 : gy9;
+      sxy13  <= {1'b0, sqx12} + {1'b0, sqy12};
+      sqz13  <= sqz12;
+      gx12   <= max0(g1_11, g2_11);
+      gy12   <= max0(g3_11, g4_11);
+      n14    <= sxy13 + {1'b0, sqz13};
+      gap13  <= (gx12 > gy12) ? gx12 : gy12;
     end
   end
 
-  logic tun11, near11;
+  logic tun14, near14;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      tun11  <= gap10 == '0;
-      near11 <= gap10 <= {{(GW - 1 - 16){1'b0}}, near_q};
+      tun14  <= gap13 == '0;
+      near14 <= gap13 <= {{(GW - 1 - 16){1'b0}}, near_q};
     end
   end
 
-  // ---- 11 .. 25: the distance from the camera -----------------------------------------------
-  logic [RootW:0] root25;
+  // ---- 15 .. 42: the distance from the camera -----------------------------------------------
+  logic [RootW:0] root42;
   scw_warning_sqrt #(.InW(NW), .RootW(RootW), .Latency(SqrtLat)) u_sqrt (
-    .clk_i, .en_i, .n_i(n10), .root_o(root25)
+    .clk_i, .en_i, .n_i(n14), .root_o(root42)
   );
 
-  // ---- 26 .. 28: distance, thresholds, severity ---------------------------------------------
-  logic meas26, tc26, obst_h27, tun27, near27;
-  scw_warning_delay #(.Width(2), .Depth(26)) u_flags_delay (
-    .clk_i, .en_i, .d_i({measurable_i, too_close_i}), .q_o({meas26, tc26})
+  // ---- 43 .. 45: distance, thresholds, severity ---------------------------------------------
+  logic meas43, tc43, obst_h44, tun44, near44;
+  scw_warning_delay #(.Width(2), .Depth(43)) u_flags_delay (
+    .clk_i, .en_i, .d_i({measurable_i, too_close_i}), .q_o({meas43, tc43})
   );
-  scw_warning_delay #(.Width(1), .Depth(19)) u_height_delay (
-    .clk_i, .en_i, .d_i(obst_h8), .q_o(obst_h27)
+  scw_warning_delay #(.Width(1), .Depth(33)) u_height_delay (
+    .clk_i, .en_i, .d_i(obst_h11), .q_o(obst_h44)
   );
-  scw_warning_delay #(.Width(2), .Depth(16)) u_gap_delay (
-    .clk_i, .en_i, .d_i({tun11, near11}), .q_o({tun27, near27})
+  scw_warning_delay #(.Width(2), .Depth(30)) u_gap_delay (
+    .clk_i, .en_i, .d_i({tun14, near14}), .q_o({tun44, near44})
   );
 
-  logic signed [DW-1:0] dist26, dist27, dj27;
-  logic le_high27, lt_med27, meas27, tc27;
+  logic signed [DW-1:0] dist43, dist44, dj44;
+  logic le_high44, lt_med44, meas44, tc44;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      dist26    <= $signed({1'b0, root25}) - $signed({{(DW - 16){vz_q[15]}}, vz_q});
+      dist43    <= $signed({1'b0, root42}) - $signed({{(DW - 16){vz_q[15]}}, vz_q});
       // Too close: judged at the bumper, d = 0 (<= high always, < medium unless medium = 0).
-      le_high27 <= tc26 || dist26 <= $signed({{(DW - 16){1'b0}}, high_q});
-      lt_med27  <= tc26 ? med_nz_q : dist26 < $signed({{(DW - 16){1'b0}}, med_q});
-      dj27      <= tc26 ? '0 : dist26;
-      dist27    <= dist26;
-      meas27    <= meas26;
-      tc27      <= tc26;
+      le_high44 <= tc43 || dist43 <= $signed({{(DW - 16){1'b0}}, high_q});
+      lt_med44  <= tc43 ? med_nz_q : dist43 < $signed({{(DW - 16){1'b0}}, med_q});
+      dj44      <= tc43 ? '0 : dist43;
+      dist44    <= dist43;
+      meas44    <= meas43;
+      tc44      <= tc43;
     end
   end
 
   logic obst;
   logic [1:0] sev;
   always_comb begin
-    obst = meas27 && obst_h27;
+    obst = meas44 && obst_h44;
     if (!obst) sev = 2'd0;                                   // none
-    else if (tun27) sev = le_high27 ? 2'd3 : lt_med27 ? 2'd2 : 2'd1;
-    else sev = (near27 && lt_med27) ? 2'd2 : 2'd1;
+    else if (tun44) sev = le_high44 ? 2'd3 : lt_med44 ? 2'd2 : 2'd1;
+    else sev = (near44 && lt_med44) ? 2'd2 : 2'd1;
   end
 
   localparam int unsigned EvalW = 5 + 2 * DW;
-  logic [EvalW-1:0] eval28, eval_out;
+  logic [EvalW-1:0] eval45, eval_out;
   always_ff @(posedge clk_i) begin
-    if (en_i) eval28 <= {obst, sev, tun27, tc27, dist27, dj27};
+    if (en_i) eval45 <= {obst, sev, tun44, tc44, dist44, dj44};
   end
   if (OutStages > Stages) begin : gen_hold
     scw_warning_delay #(.Width(EvalW), .Depth(OutStages - Stages)) u_hold (
-      .clk_i, .en_i, .d_i(eval28), .q_o(eval_out)
+      .clk_i, .en_i, .d_i(eval45), .q_o(eval_out)
     );
   end else begin : gen_no_hold
-    assign eval_out = eval28;
+    assign eval_out = eval45;
   end
   assign {obstacle_o, severity_o, in_tunnel_o, too_close_o, distance_o, judged_o} = eval_out;
 

@@ -10,13 +10,16 @@
 // Step k (k = 0 .. RootW-1) finds root bit b = RootW-1-k from the remainder's upper part:
 //   acc = {rem, next two bits of n};  acc >= 4 R + 1 ? (acc - (4 R + 1), R = 2 R + 1) : R = 2 R
 // with R the root bits found so far. The remainder after step k is at most 2 R < 2^(k+2), so
-// step k's subtractor is k + 4 bits wide and the low bits of n wait for their turn. Two steps
-// per pipeline stage (the last step alone), then one stage for the rounding: rem > R adds one.
+// step k's subtractor is k + 4 bits wide and the low bits of n wait for their turn. One step
+// per pipeline stage (one carry chain of at most RootW + 3 bits per clock), then one stage for
+// the rounding: rem > R adds one (the compare and R + 1 side by side, then a select).
+// The bits of n still to come travel in SRLs; the two a step takes next come from flip-flops
+// kept out of them, since an SRL's clock-to-output (about 1.5 ns) would start the carry chain.
 module scw_warning_sqrt #(
   parameter int unsigned InW     /*verilator public*/ = 58,  // n
   parameter int unsigned RootW   /*verilator public*/ = 27,  // root bits before rounding
   // The caller's pipeline depth for this block: checked here, so the caller cannot misalign.
-  parameter int unsigned Latency /*verilator public*/ = (RootW + 1) / 2 + 1
+  parameter int unsigned Latency /*verilator public*/ = RootW + 1
 ) (
   input  logic             clk_i,
   input  logic             en_i,
@@ -28,8 +31,8 @@ module scw_warning_sqrt #(
   if (RootW < 2 || InW < NW) begin : gen_bad
     $error("scw_warning_sqrt: need RootW >= 2 and InW >= 2 RootW");
   end
-  if (Latency != (RootW + 1) / 2 + 1) begin : gen_bad_latency
-    $error("scw_warning_sqrt: Latency is (RootW + 1) / 2 + 1");
+  if (Latency != RootW + 1) begin : gen_bad_latency
+    $error("scw_warning_sqrt: Latency is RootW + 1");
   end
 
   logic [NW-1:0] nc;
@@ -72,18 +75,26 @@ module scw_warning_sqrt #(
     assign ge    = !diff[k+3];
     assign rem_c = ge ? diff[k+1:0] : acc[k+1:0];
 
-    if (k % 2 == 1 || k == RootW - 1) begin : gen_reg
-      always_ff @(posedge clk_i) begin
-        if (en_i) begin
-          rem_s  <= rem_c;
-          root_s <= root_c;
-          low_s  <= low_c;
-        end
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        rem_s  <= rem_c;
+        root_s <= root_c;
       end
-    end else begin : gen_comb
-      assign rem_s  = rem_c;
-      assign root_s = root_c;
-      assign low_s  = low_c;
+    end
+    if (B > 1) begin : gen_low_reg
+      // The two bits step k + 1 takes, then the rest.
+      (* keep *) always_ff @(posedge clk_i) begin
+        if (en_i) low_s[LowW-1 -: 2] <= low_c[LowW-1 -: 2];
+      end
+      always_ff @(posedge clk_i) begin
+        if (en_i) low_s[LowW-3:0] <= low_c[LowW-3:0];
+      end
+    end else if (B == 1) begin : gen_low_reg_next
+      (* keep *) always_ff @(posedge clk_i) begin
+        if (en_i) low_s <= low_c;
+      end
+    end else begin : gen_low_none
+      assign low_s = '0;
     end
 
     // diff[k+2] is 0 whenever it is used (acc >= trial leaves at most k + 2 bits); the last
@@ -92,7 +103,7 @@ module scw_warning_sqrt #(
     if (B > 0) begin : gen_unused
       assign unused_step = diff[k+2];
     end else begin : gen_unused_last
-      assign unused_step = ^{diff[k+2], low_s};
+      assign unused_step = ^{diff[k+2], low_s, low_c};
     end
   end
 
@@ -100,7 +111,11 @@ module scw_warning_sqrt #(
   logic [RootW-1:0] root_f;
   assign rem_f  = gen_step[RootW-1].rem_s;
   assign root_f = gen_step[RootW-1].root_s;
+  logic round_up;
+  logic [RootW:0] root_inc;
+  assign round_up = rem_f > {1'b0, root_f};
+  assign root_inc = {1'b0, root_f} + 1'b1;
   always_ff @(posedge clk_i) begin
-    if (en_i) root_o <= {1'b0, root_f} + (RootW + 1)'(rem_f > {1'b0, root_f});
+    if (en_i) root_o <= round_up ? root_inc : {1'b0, root_f};
   end
 endmodule

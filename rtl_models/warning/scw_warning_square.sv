@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// Warning stage: the exact square of a signed coordinate, in two pipeline stages.
+// Warning stage: the exact square of a signed coordinate, in three pipeline stages.
 `default_nettype none
 
 // x = xh * 2^L + xl with xl = x[L-1:0] unsigned and xh = x[XW-1:L] signed, so
 //   x^2 = xh^2 * 2^(2L) + xh * xl * 2^(L+1) + xl^2
-// from three products that each fit one DSP48E1 (stage 1). xh^2 and xl^2 do not overlap, so
-// stage 2 needs one carry chain, above bit L (the bits below come from xl^2 alone).
+// from three products that each fit one DSP48E1 (stages 1 and 2: the multiplier and output
+// registers M and P; without P, the path from one DSP's M into the next one's adder is 3 ns).
+// xh^2 and xl^2 do not overlap, so stage 3 needs one carry chain, above bit L (the bits below
+// come from xl^2 alone).
 module scw_warning_square #(
   parameter int unsigned XW = 29,  // x, signed
   parameter int unsigned L  = 17   // low part: up to 17 bits for one DSP
@@ -13,7 +15,7 @@ module scw_warning_square #(
   input  logic                clk_i,
   input  logic                en_i,
   input  logic signed [XW-1:0] x_i,
-  output logic [2*XW-2:0]     sq_o  // x^2 <= 2^(2 XW - 2), two enabled clocks later
+  output logic [2*XW-2:0]     sq_o  // x^2 <= 2^(2 XW - 2), three enabled clocks later
 );
   localparam int unsigned H   = XW - L;
   localparam int unsigned HHW = 2 * H;          // xh^2, signed product; its top bit is 0
@@ -33,17 +35,20 @@ module scw_warning_square #(
   assign hl_b = {{(H + 1){1'b0}}, x_i[L-1:0]};
   assign ll_a = {{L{1'b0}}, x_i[L-1:0]};
 
-  logic signed [HHW-1:0] hh_q;
-  logic signed [HLW-1:0] hl_q;
-  logic [LLW-1:0] ll_q;
+  logic signed [HHW-1:0] hh_m, hh_q;
+  logic signed [HLW-1:0] hl_m, hl_q;
+  logic [LLW-1:0] ll_m, ll_q;
   logic signed [UpW:0] up;  // one bit of headroom for the signed add
   assign up = {1'b0, hh_q[HHW-2:0], ll_q[LLW-1:L+1]} + {{(UpW + 1 - HLW){hl_q[HLW-1]}}, hl_q};
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      hh_q <= hh_a * hh_a;
-      hl_q <= hl_a * hl_b;
-      ll_q <= ll_a * ll_a;
+      hh_m <= hh_a * hh_a;
+      hl_m <= hl_a * hl_b;
+      ll_m <= ll_a * ll_a;
+      hh_q <= hh_m;
+      hl_q <= hl_m;
+      ll_q <= ll_m;
       sq_o <= {up[UpW-1:0], ll_q[L:0]};
     end
   end

@@ -557,7 +557,8 @@ TEST_CASE("scw_warning passes empty and back-to-back frames like the model", "[w
   }
   SECTION("frames shorter and longer than the pipeline") {
     std::vector<LabelPacket> words;
-    for (int n : {2, 34, 35, 36, 0, 1, 70, 3}) {
+    constexpr int L = hw::kLatency;
+    for (int n : {2, L - 2, L - 1, L, 0, 1, 2 * L - 2, 3}) {
       std::vector<Object> objs;
       for (int i = 0; i < n; ++i) objs.push_back(gen.next());
       append_frame(words, objs);

@@ -17,7 +17,7 @@ module tb_warning_replay #(
 );
   localparam int unsigned InW  = 1 + 32 + 10 * 16 + 9 * 64;     // sim/labelling_pack.hpp: 769
   localparam int unsigned OutW = 2 + 5 + 3 * 16 + 32 + 7 * 16;  // sim/warning_pack.hpp: 199
-  localparam int unsigned Latency = 36;                         // hls::warning::kLatency
+  localparam int unsigned Latency = 47;                         // hls::warning::kLatency
   // Generous: the stage takes a word a clock unless its result waits; the source idles 1 clock
   // in 4 and the sink 3 in 7.
   localparam longint unsigned MaxCycles = 8 * (WordsIn + WordsOut) + 8 * Latency + 1000;
