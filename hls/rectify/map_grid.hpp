@@ -61,8 +61,9 @@ struct MapGridParams {
   /// The final shift: sum K w carries 2k + KnotFracBits fractional bits, the map F.
   static constexpr int kShift = 2 * GridLog2 + KnotFracBits - FracBits;
   /// Register stages from issuing a beat (the knot RAMs sample its address) to presenting it:
-  /// knot words, vertical blends, horizontal blends, round and clamp + output register.
-  static constexpr int kLatency = 5;
+  /// knot RAM read, knot words, vertical differences, vertical blends (DSP M, P), R - L,
+  /// horizontal blends (DSP M, P), + rounding half, shift and compares, clamp = output.
+  static constexpr int kLatency = 11;
   using map_beat = MapBeat<P, kCoordBits>;
   static_assert(P == 1 || P == 2 || P == 4, "P must be 1, 2 or 4");
   static_assert(GridLog2 >= 1 && GridLog2 <= 6, "G = 2^GridLog2 must be 2 .. 64");

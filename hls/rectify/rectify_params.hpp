@@ -48,9 +48,11 @@ struct RectifyParams {
   static constexpr int kCoordBits =
       clog2(static_cast<long long>(MaxWidthPx > MaxHeight ? MaxWidthPx : MaxHeight) *
                 (1LL << FracBits) + 1) + 1;
-  /// Register stages from accepting a map beat to presenting its output beat (decode, RAM
-  /// read, horizontal blend, vertical blend + round): shared by the RTL, sim/ and the tests.
-  static constexpr int kLatency = 4;
+  /// Register stages from accepting a map beat to presenting its output beat: RAM addresses,
+  /// RAM read + window compares, bank registers + tap enables, bank pick, tap differences,
+  /// horizontal blend (DSP M, P), b - a, vertical blend + round (DSP M, P). Shared by the
+  /// RTL, sim/ and the tests (docs/rectify.md).
+  static constexpr int kLatency = 10;
   using pixel_beat = Beat<pixel_t, P>;
   using map_beat = MapBeat<P, kCoordBits>;
   static_assert(P == 1 || P == 2 || P == 4, "P must be 1, 2 or 4");

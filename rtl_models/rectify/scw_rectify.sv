@@ -12,11 +12,24 @@
 // Storage: per output lane, four simple dual-port RAMs by (row parity, column parity), so the
 // four bilinear taps always read four different RAMs; each word holds Q = max(1, Ppc/2)
 // pixels of one parity, so a beat writes one word per column parity. The address is
-// {column word, row slot / 2}: Rows is a power of two and nothing is wasted.
+// {column word, row slot / 2}: Rows is a power of two and nothing is wasted. Each RAM is
+// built from banks of one RAMB18 (2048 x 9, 1024 x 18 or 512 x 36) by address, every bank's
+// output goes straight into a register (block RAM clock-to-out is most of a clock) and the
+// bank is chosen a clock later: no read mux sits behind a block RAM.
 //
-// Pipeline under one enable (adv = !out_valid || out_ready), Latency = 4:
-//   s0 decode taps, window check, RAM addresses -> s1 RAM words -> s2 horizontal blends
-//   a = f00 S + (f10 - f00) fx, b likewise -> out  (a S + (b - a) fy + S^2/2) >> 2F.
+// Pipeline under one enable (adv = !out_valid || out_ready), Latency = 10:
+//   s0 RAM addresses (two short adds from the map beat), taps' raw coordinates
+//   s1 RAM read; compares of the taps against image and row window
+//   s2 bank registers; per-RAM tap enables and the window error
+//   s3 bank picked, pixel of the word picked, gated: one pixel per RAM
+//   s4 taps by parity, d10 = f10 - f00, d11 = f11 - f01           (DSP A/B registers)
+//   s5 products d fx, C = f S + S/2                                (DSP M/C registers)
+//   s6 a' = f00 S + d10 fx + S/2, b' likewise                      (DSP P register)
+//   s7 b' - a'                                                     (DSP A/B registers)
+//   s8 product (b' - a') fy, C = a' S                              (DSP M/C registers)
+//   s9 v = a S + (b - a) fy + S^2/2, output = v >> 2F              (DSP P register)
+// S/2 rides in a' and b' for free (the low F bits of f S are zero) and cancels in b' - a', so
+// a' S carries the S^2/2 of the one rounding: the arithmetic is the C++ model's exactly.
 // cfg_* are static: set them before rst_ni rises (they are registered without reset, and the
 // first clock after reset already uses them). Geometry comes from cfg_*; sof/eol are checked,
 // never trusted. A sof in mid-frame is held:
@@ -31,6 +44,9 @@ module scw_rectify #(
   parameter int unsigned MaxHeight  /*verilator public*/ = 32,
   parameter int unsigned Rows       /*verilator public*/ = 16,
   parameter int unsigned FracBits   /*verilator public*/ = 5,
+  // Words per RAM bank, a power of two; 0: one RAMB18 (the only reason to set it is a test
+  // that runs the bank registers and the bank pick at a small size).
+  parameter int unsigned BankWords  = 0,
   localparam int unsigned MaxWH     = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight,
   localparam int unsigned CoordBits = $clog2(MaxWH * (1 << FracBits) + 1) + 1,
   localparam int unsigned PixW      = scw_pkg::PixelBits,
@@ -67,7 +83,7 @@ module scw_rectify #(
   output logic [2:0]       err_o
 );
   /* verilator lint_off UNUSEDPARAM */
-  localparam int unsigned Latency     /*verilator public*/ = 4;
+  localparam int unsigned Latency     /*verilator public*/ = 10;
   localparam int unsigned MapCoordBits /*verilator public*/ = CoordBits;
   /* verilator lint_on UNUSEDPARAM */
   localparam int unsigned Cols    = MaxWidthPx / Ppc;
@@ -84,7 +100,13 @@ module scw_rectify #(
   localparam int unsigned WordW   = Q * PixW;
   localparam int unsigned IntW    = CoordBits - FracBits;
   localparam int unsigned DW      = ((IntW > SlotW + 1) ? IntW : SlotW + 1) + 2;
-  localparam int unsigned CmpW    = ((HW > AvW) ? HW : AvW) + 1;
+  // One bank = one RAMB18 at this word width (2048 x 9, 1024 x 18, 512 x 36).
+  localparam int unsigned B18     = (BankWords != 0) ? BankWords :
+                                    (WordW <= 9) ? 2048 : (WordW <= 18) ? 1024 : 512;
+  localparam int unsigned BankD   = (Depth < B18) ? Depth : B18;
+  localparam int unsigned BankAW  = $clog2(BankD);
+  localparam int unsigned Banks   = (Depth + BankD - 1) / BankD;
+  localparam int unsigned BankW   = (AddrW > BankAW) ? AddrW - BankAW : 1;
 
   if (Ppc != 1 && Ppc != 2 && Ppc != 4) begin : gen_bad_ppc
     $error("scw_rectify: Ppc must be 1, 2 or 4");
@@ -92,57 +114,127 @@ module scw_rectify #(
   if (MaxWidthPx % (4 * Ppc) != 0 || Rows < 4 || (Rows & (Rows - 1)) != 0) begin : gen_bad_geom
     $error("scw_rectify: need MaxWidthPx %% (4 Ppc) == 0 and Rows a power of two >= 4");
   end
+  if ((BankWords & (BankWords - 1)) != 0) begin : gen_bad_bank
+    $error("scw_rectify: BankWords must be 0 or a power of two");
+  end
 
   // ---- configuration ---------------------------------------------------------------------
   // cfg_* are static: registered here (no reset, so they settle while rst_ni is low) together
   // with the values derived from them, which keeps them off every timing path.
-  logic [WW-1:0] width_q;
-  logic [HW-1:0] height_q, last_row_q;
-  logic [SlotW-1:0] lead_q;
-  logic [SlotW+2:0] wr_limit_q;
-  logic [CmpW-1:0] need_first;  // min(D, H): the first row of a frame
+  logic [HW-1:0] last_row1_q;    // H - 2
+  logic [ColW-1:0] last_col1_q;  // the last beat of a row minus one
+  logic one_col_q, one_row_q;    // rows of one beat, frames of one row
+  logic [8*(AvW+2)-1:0] dlim_q;  // D + 3 - j at [j*(AvW+2) +: AvW+2], signed
   always_ff @(posedge clk_i) begin
-    width_q    <= cfg_width_i;
-    height_q   <= cfg_height_i;
-    lead_q     <= cfg_lead_i;
-    last_row_q <= cfg_height_i - 1'b1;
-    wr_limit_q <= (SlotW + 3)'(cfg_lead_i) + 1'b1;
-    need_first <= (CmpW'(cfg_lead_i) < CmpW'(cfg_height_i)) ? CmpW'(cfg_lead_i)
-                                                            : CmpW'(cfg_height_i);
+    last_row1_q <= cfg_height_i - HW'(2);
+    one_row_q   <= cfg_height_i == HW'(1);
+    last_col1_q <= ColW'((cfg_width_i >> PpcLog) - WW'(2));
+    one_col_q   <= (cfg_width_i >> PpcLog) == WW'(1);
+    for (int j = 0; j < 8; j++) begin
+      dlim_q[j*(AvW+2) +: AvW+2] <= (AvW + 2)'(cfg_lead_i) + (AvW + 2)'(3) - (AvW + 2)'(j);
+    end
   end
 
   // ---- shared ----------------------------------------------------------------------------
-  logic adv, pending;
+  // The two sides' conditions are kept as registered flags, each next value a select between
+  // compares of registers, so the handshake sees flags, not compares:
+  //   wr_ok_q = avail + pending <= D + 1                   (the writer may go on)
+  //   allowed = avail >= min(D, H - v) = ge_d_q || nz_q     (the reader may go on)
+  // with ge_d_q = avail >= D and nz_q = fdiff != 0, fdiff = frames the writer finished minus
+  // frames the reader finished: avail >= H - v says exactly that the writer has finished the
+  // reader's frame. The counters take each event a clock late (inc_q, dec_q, up_q, dn_q), so
+  // no adder follows the handshake; the flags add the event still in flight.
+  logic adv, pending, pend_next, inc, dec, fe, wfe;
   logic out_valid_q;
   logic s0_valid_q, s0_eol_q;
-  logic [AvW-1:0] avail_q;
+  logic inc_q, dec_q, up_q, dn_q;
+  logic [AvW-1:0] avail_q;  // avail = avail_q + inc_q - dec_q
+  logic [AvW-1:0] fdiff_q;  // fdiff = fdiff_q + up_q - dn_q, <= D + 1 (one-row frames)
+  logic wr_ok_q, ge_d_q, nz_q;
+  // The compares of avail_q and fdiff_q are made a clock ahead, from the values before and the
+  // events in flight, so a flag's next value is two selects from registers (le_q, fz_q have
+  // no reset: like the cfg registers they settle during reset, where the counters hold 0).
+  logic [7:0] le_w;         // le_w[j] = avail_q <= D + 3 - j
+  logic [5:0] le_q;         // le_q[i] = avail_q <= D + 2 - i
+  logic [3:0] le_a;         // le_q[a + j], a = 1 + inc_q - dec_q
+  logic [4:0] eq_w;         // eq_w[m] = fdiff_q == m - 1
+  logic [1:0] nb, nc;       // inc - dec + pend_next (0..2), 1 + inc - dec (0..2)
+  logic [2:0] fz_q;         // fdiff_q == 0, 1, 2
+  logic nz_p, nz_0, nz_m;   // fdiff' != 0 if this clock's up - dn is +1, 0, -1
   logic [2:0] err_q;
-  logic [ColW-1:0] last_col;
-  logic [WW-1:0] cols_cfg;
 
-  assign adv      = !out_valid_q || out_ready_i;
-  assign pending  = s0_valid_q && s0_eol_q;
-  assign cols_cfg = width_q >> PpcLog;
-  assign last_col = ColW'(cols_cfg - 1'b1);
-  assign err_o    = err_q;
+  assign adv       = !out_valid_q || out_ready_i;
+  assign pending   = s0_valid_q && s0_eol_q;
+  assign pend_next = dec || (!adv && pending);
+  assign err_o     = err_q;
+
+  for (genvar j = 0; j < 8; j++) begin : gen_le
+    assign le_w[j] = $signed({2'b00, avail_q}) <= $signed(dlim_q[j*(AvW+2) +: AvW+2]);
+  end
+  for (genvar m = 0; m < 5; m++) begin : gen_eq
+    assign eq_w[m] = fdiff_q == AvW'(m - 1);
+  end
+  always_ff @(posedge clk_i) begin
+    // avail_q' = avail_q + a - 1: avail_q' <= D + 2 - i is le_w[i + a]
+    le_q <= (inc_q == dec_q) ? le_w[6:1] : (inc_q ? le_w[7:2] : le_w[5:0]);
+    // fdiff_q' = fdiff_q + g - 1, g = 1 + up_q - dn_q: fdiff_q' == k is eq_w[k + 2 - g]
+    fz_q <= (up_q == dn_q) ? eq_w[3:1] : (up_q ? eq_w[2:0] : eq_w[4:2]);
+  end
+  assign le_a = (inc_q == dec_q) ? le_q[4:1] : (inc_q ? le_q[5:2] : le_q[3:0]);
+  assign nb   = dec ? {1'b0, inc} : {inc && pend_next, inc != pend_next};
+  assign nc   = (inc == dec) ? 2'd1 : (inc ? 2'd2 : 2'd0);
+  // fdiff' = fdiff_q + (up_q - dn_q) + (up - dn), and fdiff_q >= 0
+  assign nz_p = !(dn_q && !up_q) || !fz_q[0];
+  assign nz_0 = (up_q && !dn_q) || ((up_q == dn_q) ? !fz_q[0] : !fz_q[1]);
+  assign nz_m = (up_q == dn_q) ? !fz_q[1] : (up_q ? !fz_q[0] : !fz_q[2]);
+
+  // inc: a raw row finished (written or skipped), wfe: the raw frame's last; dec: an output
+  // row's last beat taken, fe: the output frame's last row.
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      inc_q   <= 1'b0;
+      dec_q   <= 1'b0;
+      up_q    <= 1'b0;
+      dn_q    <= 1'b0;
+      avail_q <= '0;
+      fdiff_q <= '0;
+      wr_ok_q <= 1'b1;
+      ge_d_q  <= 1'b0;
+      nz_q    <= 1'b0;
+    end else begin
+      inc_q   <= inc;
+      dec_q   <= dec;
+      up_q    <= inc && wfe;
+      dn_q    <= dec && fe;
+      avail_q <= avail_q + AvW'(inc_q) - AvW'(dec_q);
+      fdiff_q <= fdiff_q + AvW'(up_q) - AvW'(dn_q);
+      // avail_q + (a - 1) + nb <= D + 1, i.e. le[a + nb]
+      wr_ok_q <= le_a[nb];
+      // avail_q + (a - 1) + (nc - 1) >= D, i.e. !le_q[a + nc + 1]
+      ge_d_q  <= !le_a[nc + 2'd1];
+      if ((inc && wfe) == (dec && fe)) nz_q <= nz_0;
+      else if (inc && wfe) nz_q <= nz_p;
+      else nz_q <= nz_m;
+    end
+  end
 
   // ---- writer ----------------------------------------------------------------------------
   logic [ColW-1:0] in_col_q;
   logic [HW-1:0] in_row_q;
   logic [SlotW-1:0] in_slot_q;
-  logic skip_q, rheld_q, rheld_eol_q;
+  logic skip_q, rheld_q, rheld_eol_q, in_last_q, in_fs_q, in_rlast_q;
   logic [BeatW-1:0] rheld_q_data;
-  logic wr_ok, raw_fs, raw_take, wr_do, wr_eol, wr_last, row_done, skip_set, rheld_set, rheld_clr;
+  logic raw_fs, raw_take, wr_do, wr_eol, wr_last, row_done, skip_set, rheld_set, rheld_clr;
   logic err_raw;
   logic [BeatW-1:0] wr_data;
 
-  // avail + pending <= D + 1, as two compares against registers and a select (no adder).
-  assign wr_ok      = pending ? ((AvW + 1)'(avail_q) <= (AvW + 1)'(lead_q))
-                              : ((AvW + 1)'(avail_q) <= wr_limit_q);
-  assign raw_fs     = (in_row_q == '0) && (in_col_q == '0);
-  assign in_ready_o = !skip_q && !rheld_q && wr_ok;
+  // in_last_q: in_col is the row's last beat (beside one-beat rows); in_fs_q: a frame starts.
+  assign raw_fs     = in_fs_q;
+  assign in_ready_o = !skip_q && !rheld_q && wr_ok_q;
   assign raw_take   = in_valid_i && in_ready_o;
-  assign wr_last    = in_col_q == last_col;
+  assign wr_last    = in_last_q || one_col_q;
+  assign inc        = row_done;
+  assign wfe        = in_rlast_q || one_row_q;
 
   always_comb begin
     wr_do     = 1'b0;
@@ -163,9 +255,9 @@ module scw_rectify #(
       end else begin
         wr_do = 1'b1;
       end
-    end else if (skip_q && wr_ok) begin
+    end else if (skip_q && wr_ok_q) begin
       row_done = 1'b1;
-    end else if (rheld_q && wr_ok) begin
+    end else if (rheld_q && wr_ok_q) begin
       wr_do     = 1'b1;
       wr_data   = rheld_q_data;
       wr_eol    = rheld_eol_q;
@@ -180,20 +272,29 @@ module scw_rectify #(
       in_col_q  <= '0;
       in_row_q  <= '0;
       in_slot_q <= '0;
+      in_last_q <= 1'b0;
+      in_fs_q   <= 1'b1;
+      in_rlast_q <= 1'b0;
       skip_q    <= 1'b0;
       rheld_q   <= 1'b0;
     end else begin
       if (row_done) begin
         in_col_q  <= '0;
+        in_last_q <= 1'b0;
+        in_fs_q   <= wfe;
         in_slot_q <= in_slot_q + 1'b1;
-        if (in_row_q == last_row_q) begin
-          in_row_q <= '0;
-          skip_q   <= 1'b0;
+        if (wfe) begin
+          in_row_q   <= '0;
+          in_rlast_q <= 1'b0;
+          skip_q     <= 1'b0;
         end else begin
-          in_row_q <= in_row_q + 1'b1;
+          in_row_q   <= in_row_q + 1'b1;
+          in_rlast_q <= in_row_q == last_row1_q;
         end
       end else if (wr_do) begin
-        in_col_q <= in_col_q + 1'b1;
+        in_col_q  <= in_col_q + 1'b1;
+        in_last_q <= in_col_q == last_col1_q;
+        in_fs_q   <= 1'b0;
       end
       if (skip_set) skip_q <= 1'b1;
       if (rheld_set) rheld_q <= 1'b1;
@@ -226,30 +327,57 @@ module scw_rectify #(
     assign wr_addr   = {in_col_q, in_slot_q[SlotW-1:1]};
   end
 
+  // Writes land a clock late, from registers: the handshake (avail_q, in_valid_i) stays off
+  // the RAMs' write enables. That is safe: a row counts as written (avail_q) at the edge its
+  // last beat is taken, the write lands at the next edge, and a reader's first RAM read of
+  // the row is an edge later still (accept, then read).
+  logic [BankAW-1:0] wr_addr_q;  // within the bank
+  logic [2*WordW-1:0] wr_word_q;
+  logic [4*Banks-1:0] wr_en_q;  // RAM (r, c), bank b at (r*2 + c)*Banks + b
+  logic [BankW-1:0] wr_bank;
+  if (Banks > 1) begin : gen_wr_bank
+    assign wr_bank = wr_addr[AddrW-1:BankAW];
+  end else begin : gen_wr_bank1
+    assign wr_bank = '0;
+  end
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      wr_en_q <= '0;
+    end else begin
+      for (int r = 0; r < 2; r++) begin
+        for (int c = 0; c < 2; c++) begin
+          for (int b = 0; b < Banks; b++) begin
+            wr_en_q[(r*2 + c)*Banks + b] <= wr_do && (in_slot_q[0] == 1'(r)) && wr_col_en[c] &&
+                                            (wr_bank == BankW'(b));
+          end
+        end
+      end
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    wr_addr_q <= wr_addr[BankAW-1:0];
+    wr_word_q <= wr_word;
+  end
+
   // ---- reader ----------------------------------------------------------------------------
   logic [ColW-1:0] out_col_q;
   logic [HW-1:0] out_row_q;
   logic [SlotW-1:0] out_slot_q;
+  // The slot of the frame's row 0 (out_slot - out_row mod Rows) and that plus one: a tap's
+  // slot is then one short add from its raw row y0, with no subtract of the output row.
+  logic [SlotW-1:0] sbase_q, sbase1_q;
   logic fill_q, mheld_q, mheld_eol_q;
   logic [MapW-1:0] mheld_data_q;
   logic allowed, out_fs, out_last, map_take, go, emit, zero, mheld_set, mheld_clr;
   logic fill_set, err_map, md_eol;
-  logic [HW-1:0] rows_left, left_q, left_next;
-  logic [CmpW-1:0] need, need_q, need_next;
+  logic out_last_q, out_fs_q, out_rlast_q;  // out_rlast_q: v = H - 1 (beside H = 1)
   logic [MapW-1:0] md;
-  logic [Ppc-1:0] lane_winerr;
 
-  // need = min(D, H - v), kept in registers so the handshake does not wait for a subtract
-  // and a compare: left_q counts the rows left in the frame (0 = a frame starts, H rows), and
-  // need_q is computed for the next row while the current one streams.
-  assign rows_left   = (left_q == '0) ? height_q : left_q;
-  assign left_next   = rows_left - 1'b1;
-  assign need_next   = (CmpW'(lead_q) < CmpW'(left_next)) ? CmpW'(lead_q)
-                                                               : CmpW'(left_next);
-  assign need        = (left_q == '0) ? need_first : need_q;
-  assign allowed     = CmpW'(avail_q) >= need;
-  assign out_fs      = (out_row_q == '0) && (out_col_q == '0);
-  assign out_last    = out_col_q == last_col;
+  assign allowed     = ge_d_q || nz_q;
+  assign out_fs      = out_fs_q;
+  assign out_last    = out_last_q || one_col_q;
+  assign dec         = emit && out_last;
+  assign fe          = out_rlast_q || one_row_q;
   assign map_ready_o = adv && allowed && !fill_q && !mheld_q;
   assign map_take    = map_valid_i && map_ready_o;
   assign go          = adv && allowed;
@@ -292,35 +420,42 @@ module scw_rectify #(
       out_col_q  <= '0;
       out_row_q  <= '0;
       out_slot_q <= '0;
-      left_q     <= '0;
-      need_q     <= '0;
+      out_last_q <= 1'b0;
+      out_fs_q   <= 1'b1;
+      out_rlast_q <= 1'b0;
       fill_q     <= 1'b0;
       mheld_q    <= 1'b0;
-      avail_q    <= '0;
       err_q      <= '0;
+      sbase_q    <= '0;
+      sbase1_q   <= SlotW'(1);
     end else begin
       if (emit) begin
         if (out_last) begin
           out_col_q  <= '0;
+          out_last_q <= 1'b0;
+          out_fs_q   <= fe;
           out_slot_q <= out_slot_q + 1'b1;
-          left_q     <= left_next;
-          need_q     <= need_next;
-          if (out_row_q == last_row_q) begin
-            out_row_q <= '0;
-            fill_q    <= 1'b0;
+          if (fe) begin
+            out_row_q   <= '0;
+            out_rlast_q <= 1'b0;
+            fill_q      <= 1'b0;
+            sbase_q     <= out_slot_q + SlotW'(1);
+            sbase1_q    <= out_slot_q + SlotW'(2);
           end else begin
-            out_row_q <= out_row_q + 1'b1;
+            out_row_q   <= out_row_q + 1'b1;
+            out_rlast_q <= out_row_q == last_row1_q;
           end
         end else begin
-          out_col_q <= out_col_q + 1'b1;
+          out_col_q  <= out_col_q + 1'b1;
+          out_last_q <= out_col_q == last_col1_q;
+          out_fs_q   <= 1'b0;
         end
       end
       if (fill_set) fill_q <= 1'b1;
       if (mheld_set) mheld_q <= 1'b1;
       else if (mheld_clr) mheld_q <= 1'b0;
-      avail_q <= avail_q + AvW'(row_done) - AvW'(emit && out_last);
-      // The window check is flagged from stage 0, a cycle after its beat was taken.
-      err_q <= err_q | {s0_valid_q && (|s0_winerr_q), err_map, err_raw};
+      // The window check is flagged from stage 2, three cycles after its beat was taken.
+      err_q <= err_q | {win_err, err_map, err_raw};
     end
   end
 
@@ -332,215 +467,288 @@ module scw_rectify #(
   end
 
   // ---- pipeline control ------------------------------------------------------------------
-  logic [Ppc-1:0] s0_winerr_q;  // per lane, ORed a stage later
-  logic s0_sof_q, s0_zero_q, s1_valid_q, s1_sof_q, s1_eol_q;
-  logic s2_valid_q, s2_sof_q, s2_eol_q, out_sof_q, out_eol_q;
-  logic [BeatW-1:0] out_pix, out_data_q;
+  // Bit k of each vector is stage k of the beat stream; stage Latency - 1 is the output.
+  logic [Latency-1:0] vld_q, sof_q, eol_q;
+  logic [Ppc-1:0] lane_winerr;  // per lane (stage 2), ORed into err_q
+  logic s0_zero_q, s1_zero_q, win_err;
+  logic [BeatW-1:0] out_pix;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      s0_valid_q  <= 1'b0;
-      s1_valid_q  <= 1'b0;
-      s2_valid_q  <= 1'b0;
-      out_valid_q <= 1'b0;
+      vld_q <= '0;
     end else if (adv) begin
-      s0_valid_q  <= emit;
-      s1_valid_q  <= s0_valid_q;
-      s2_valid_q  <= s1_valid_q;
-      out_valid_q <= s2_valid_q;
+      vld_q <= {vld_q[Latency-2:0], emit};
     end
   end
 
   always_ff @(posedge clk_i) begin
     if (adv) begin
-      s0_sof_q   <= out_fs;
-      s0_eol_q   <= out_last;
-      s0_zero_q  <= zero;
-      s0_winerr_q <= (emit && !zero) ? lane_winerr : '0;
-      s1_sof_q   <= s0_sof_q;
-      s1_eol_q   <= s0_eol_q;
-      s2_sof_q   <= s1_sof_q;
-      s2_eol_q   <= s1_eol_q;
-      out_sof_q  <= s2_sof_q;
-      out_eol_q  <= s2_eol_q;
-      out_data_q <= out_pix;
+      sof_q     <= {sof_q[Latency-2:0], out_fs};
+      eol_q     <= {eol_q[Latency-2:0], out_last};
+      s0_zero_q <= zero;
+      s1_zero_q <= s0_zero_q;
     end
   end
 
+  assign s0_valid_q  = vld_q[0];
+  assign s0_eol_q    = eol_q[0];
+  assign out_valid_q = vld_q[Latency-1];
+  assign win_err     = vld_q[2] && (|lane_winerr);
   assign out_valid_o = out_valid_q;
-  assign out_data_o  = out_data_q;
-  assign out_sof_o   = out_sof_q;
-  assign out_eol_o   = out_eol_q;
+  assign out_data_o  = out_pix;
+  assign out_sof_o   = sof_q[Latency-1];
+  assign out_eol_o   = eol_q[Latency-1];
 
   // ---- lanes -----------------------------------------------------------------------------
   localparam int unsigned AW = PixW + FracBits + 2;  // signed horizontal blend, Q(8+F).0
   localparam int unsigned VW = AW + FracBits + 2;    // signed vertical blend before the shift
-  localparam logic signed [VW-1:0] Half = VW'(1) <<< (2 * FracBits - 1);
+  localparam int unsigned XW = 1 + QW + CwW;         // the column bits the addresses use
 
-  // Window bounds for row y0 (lo_s .. hi_s) and for row y0 + 1 expressed on dy = y0 - v
-  // (lo1_s .. hi1_s), so the lanes compare dy without a second adder in the path.
-  logic signed [DW-1:0] width_s, height_s, lo_s, hi_s, lo1_s, hi1_s, row_s;
+  // Image and window bounds, all on the tap's raw row y0: row y0 is in the window when
+  // v + lo <= y0 <= v + hi, row y0 + 1 when v + lo1 <= y0 <= v + hi1 (v the output row), so a
+  // lane compares registered coordinates against registered bounds and subtracts nothing.
+  logic signed [DW-1:0] width_s, width1_s, height_s, height1_s, lo_s, hi_s, lo1_s, hi1_s, row_s;
+  logic signed [DW-1:0] s0_lo_q, s0_hi_q, s0_lo1_q, s0_hi1_q;
   always_ff @(posedge clk_i) begin
-    width_s  <= $signed(DW'(cfg_width_i));
-    height_s <= $signed(DW'(cfg_height_i));
-    lo_s     <= $signed(DW'(cfg_lead_i)) - $signed(DW'(Rows)) + $signed(DW'(2));
-    hi_s     <= $signed(DW'(cfg_lead_i)) - $signed(DW'(1));
-    lo1_s    <= $signed(DW'(cfg_lead_i)) - $signed(DW'(Rows)) + $signed(DW'(1));
-    hi1_s    <= $signed(DW'(cfg_lead_i)) - $signed(DW'(2));
+    width_s   <= $signed(DW'(cfg_width_i));
+    width1_s  <= $signed(DW'(cfg_width_i)) - $signed(DW'(1));
+    height_s  <= $signed(DW'(cfg_height_i));
+    height1_s <= $signed(DW'(cfg_height_i)) - $signed(DW'(1));
+    lo_s      <= $signed(DW'(cfg_lead_i)) - $signed(DW'(Rows)) + $signed(DW'(2));
+    hi_s      <= $signed(DW'(cfg_lead_i)) - $signed(DW'(1));
+    lo1_s     <= $signed(DW'(cfg_lead_i)) - $signed(DW'(Rows)) + $signed(DW'(1));
+    hi1_s     <= $signed(DW'(cfg_lead_i)) - $signed(DW'(2));
   end
-  assign row_s    = $signed(DW'(out_row_q));
+  assign row_s = $signed(DW'(out_row_q));
+  always_ff @(posedge clk_i) begin
+    if (adv) begin
+      s0_lo_q  <= row_s + lo_s;
+      s0_hi_q  <= row_s + hi_s;
+      s0_lo1_q <= row_s + lo1_s;
+      s0_hi1_q <= row_s + hi1_s;
+    end
+  end
 
   for (genvar l = 0; l < Ppc; l++) begin : gen_lane
-    // -- s0: decode ------------------------------------------------------------------------
+    // -- s0: RAM addresses -----------------------------------------------------------------
+    // Column parity c reads word (x0 + 1 - c) >> (1 + QW): the tap of that parity is x0 or
+    // x0 + 1, whichever has parity c. Row parity r reads slot (slot0 + 1 - r) >> 1 likewise.
+    // Taps outside the image or the window read some word and are zeroed at s3.
     logic signed [IntW-1:0] x0i, y0i;
-    logic signed [DW-1:0] x0, x1, y0, y1, dy;
     logic [FracBits-1:0] fx, fy;
-    logic col0, col1, any_col, row0, row1, use0, use1, p, q;
-    logic [SlotW-1:0] slot0, slot1;
-    logic [CwW-1:0] w0, w1;
+    logic [XW-1:0] xp1;
+    logic [SlotW-1:0] slot0, slot0p1;
+    assign x0i     = $signed(md[l*2*CoordBits + FracBits +: IntW]);
+    assign y0i     = $signed(md[l*2*CoordBits + CoordBits + FracBits +: IntW]);
+    assign fx      = md[l*2*CoordBits +: FracBits];
+    assign fy      = md[l*2*CoordBits + CoordBits +: FracBits];
+    assign xp1     = XW'(x0i) + XW'(1);
+    assign slot0   = sbase_q + SlotW'(y0i);
+    assign slot0p1 = sbase1_q + SlotW'(y0i);
 
-    assign x0i = $signed(md[l*2*CoordBits + FracBits +: IntW]);
-    assign y0i = $signed(md[l*2*CoordBits + CoordBits + FracBits +: IntW]);
-    assign fx  = md[l*2*CoordBits +: FracBits];
-    assign fy  = md[l*2*CoordBits + CoordBits +: FracBits];
-    assign x0  = DW'(x0i);
-    assign y0  = DW'(y0i);
-    assign x1  = x0 + $signed(DW'(1));
-    assign y1  = y0 + $signed(DW'(1));
-    assign dy  = y0 - row_s;
-
-    assign col0    = (x0 >= 0) && (x0 < width_s);
-    assign col1    = (fx != '0) && (x1 >= 0) && (x1 < width_s);
-    assign any_col = col0 || col1;
-    assign row0    = any_col && (y0 >= 0) && (y0 < height_s);
-    assign row1    = any_col && (fy != '0) && (y1 >= 0) && (y1 < height_s);
-    assign use0    = row0 && (dy >= lo_s) && (dy <= hi_s);
-    assign use1    = row1 && (dy >= lo1_s) && (dy <= hi1_s);
-    assign lane_winerr[l] = (row0 && !use0) || (row1 && !use1);
-
-    assign slot0 = out_slot_q + dy[SlotW-1:0];
-    assign slot1 = slot0 + 1'b1;
-    assign p     = slot0[0];
-    assign q     = x0[0];
-    assign w0    = col0 ? x0[1 + QW +: CwW] : '0;
-    assign w1    = col1 ? x1[1 + QW +: CwW] : '0;
-
-    // RAM (r, c) holds raw rows of slot parity r and columns of parity c; index r * 2 + c.
-    logic [4*WordW-1:0] rd_word;
-    logic s0_u00_q, s0_u10_q, s0_u01_q, s0_u11_q, s0_p_q, s0_q_q;
+    logic signed [DW-1:0] s0_x0_q, s0_y0_q;
     logic [FracBits-1:0] s0_fx_q, s0_fy_q;
+    logic s0_p_q, s0_q_q;
+    logic [1:0] s0_sub_q;  // which pixel of its word column parity c's tap is (Q > 1)
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        s0_x0_q  <= DW'(x0i);
+        s0_y0_q  <= DW'(y0i);
+        s0_fx_q  <= fx;
+        s0_fy_q  <= fy;
+        s0_p_q   <= slot0[0];
+        s0_q_q   <= x0i[0];
+        s0_sub_q <= {x0i[1], xp1[1]};
+      end
+    end
+
+    // -- s1: RAM read; taps against image and window ------------------------------------------
+    logic s1_col0_q, s1_col1_q, s1_in0_q, s1_in1_q, s1_win0_q, s1_win1_q, s1_p_q, s1_q_q;
+    logic [FracBits-1:0] s1_fx_q, s1_fy_q;
+    logic [1:0] s1_sub_q;
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        s1_col0_q <= (s0_x0_q >= 0) && (s0_x0_q < width_s);
+        s1_col1_q <= (s0_fx_q != '0) && (s0_x0_q >= -1) && (s0_x0_q < width1_s);
+        s1_in0_q  <= (s0_y0_q >= 0) && (s0_y0_q < height_s);
+        s1_in1_q  <= (s0_fy_q != '0) && (s0_y0_q >= -1) && (s0_y0_q < height1_s);
+        s1_win0_q <= (s0_y0_q >= s0_lo_q) && (s0_y0_q <= s0_hi_q);
+        s1_win1_q <= (s0_y0_q >= s0_lo1_q) && (s0_y0_q <= s0_hi1_q);
+        s1_p_q    <= s0_p_q;
+        s1_q_q    <= s0_q_q;
+        s1_fx_q   <= s0_fx_q;
+        s1_fy_q   <= s0_fy_q;
+        s1_sub_q  <= s0_sub_q;
+      end
+    end
+
+    // -- s2: bank registers; which taps contribute ------------------------------------------
+    // A row is needed when it holds a contributing tap (map_taps.hpp); a needed row outside
+    // the window reads 0 and flags err_o[2]. Tap (row offset o, column offset k) sits in RAM
+    // (p ^ o, q ^ k), so the enables are permuted to RAM order here.
+    logic any_col, row0, row1, use0, use1;
+    logic [3:0] u;  // tap enables, index o * 2 + k
+    logic [3:0] s2_en_q;  // RAM enables, index r * 2 + c
+    logic s2_p_q, s2_q_q;
+    logic [FracBits-1:0] s2_fx_q, s2_fy_q;
+    logic [1:0] s2_sub_q;
+    assign any_col = s1_col0_q || s1_col1_q;
+    assign row0    = any_col && s1_in0_q;
+    assign row1    = any_col && s1_in1_q;
+    assign use0    = row0 && s1_win0_q && !s1_zero_q;
+    assign use1    = row1 && s1_win1_q && !s1_zero_q;
+    assign u       = {use1 && s1_col1_q, use1 && s1_col0_q, use0 && s1_col1_q, use0 && s1_col0_q};
+    logic s2_winerr_q;
+    assign lane_winerr[l] = s2_winerr_q;
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        s2_winerr_q <= !s1_zero_q && ((row0 && !s1_win0_q) || (row1 && !s1_win1_q));
+        for (int r = 0; r < 2; r++) begin
+          for (int c = 0; c < 2; c++) begin
+            s2_en_q[r*2 + c] <= u[{1'(r) ^ s1_p_q, 1'(c) ^ s1_q_q}];
+          end
+        end
+        s2_p_q   <= s1_p_q;
+        s2_q_q   <= s1_q_q;
+        s2_fx_q  <= s1_fx_q;
+        s2_fy_q  <= s1_fy_q;
+        s2_sub_q <= s1_sub_q;
+      end
+    end
+
+    // -- RAMs (r, c) at index r * 2 + c; s3: bank and pixel picked, gated ------------------------
+    logic [4*PixW-1:0] s3_px;  // s3 registers, one per RAM
     for (genvar r = 0; r < 2; r++) begin : gen_r
       for (genvar c = 0; c < 2; c++) begin : gen_c
         logic [AddrW-1:0] addr_q;
-        logic [WordW-1:0] word;
+        logic [BankW-1:0] bank1_q, bank2_q;
+        logic [Banks*WordW-1:0] bword_q;  // s2: every bank's word
+        logic [WordW-1:0] picked;
         always_ff @(posedge clk_i) begin
-          if (adv) addr_q <= {(q == 1'(c)) ? w0 : w1, (p == 1'(r)) ? slot0[SlotW-1:1] : slot1[SlotW-1:1]};
+          if (adv) begin
+            addr_q <= {(c == 0) ? xp1[1+QW +: CwW] : x0i[1+QW +: CwW],
+                       (r == 0) ? slot0p1[SlotW-1:1] : slot0[SlotW-1:1]};
+          end
         end
-        scw_ram_sdp #(
-          .Width(WordW),
-          .Depth(Depth)
-        ) u_ram (
-          .clk_i,
-          .wr_en_i  (wr_do && (in_slot_q[0] == 1'(r)) && wr_col_en[c]),
-          .wr_addr_i(wr_addr),
-          .wr_data_i(wr_word[c*WordW +: WordW]),
-          .rd_en_i  (adv),
-          .rd_addr_i(addr_q),
-          .rd_data_o(word)
-        );
-        assign rd_word[(r*2 + c)*WordW +: WordW] = word;
-      end
-    end
-
-    // Which pixel of a column-parity word a tap takes (words hold Q pixels).
-    logic [1:0] s0_sub_q, s1_sub_q;
-    if (Q > 1) begin : gen_sub
-      logic [1:0] sub;
-      assign sub[0] = (q == 1'b0) ? x0[1] : x1[1];
-      assign sub[1] = (q == 1'b1) ? x0[1] : x1[1];
-      always_ff @(posedge clk_i) begin
-        if (adv) s0_sub_q <= sub;
-      end
-    end else begin : gen_no_sub
-      assign s0_sub_q = '0;
-    end
-
-    always_ff @(posedge clk_i) begin
-      if (adv) begin
-        s0_u00_q <= use0 && col0;
-        s0_u10_q <= use0 && col1;
-        s0_u01_q <= use1 && col0;
-        s0_u11_q <= use1 && col1;
-        s0_p_q   <= p;
-        s0_q_q   <= q;
-        s0_fx_q  <= fx;
-        s0_fy_q  <= fy;
-      end
-    end
-
-    // -- s1: RAM words in; pick the taps; horizontal blends -----------------------------------
-    logic s1_u00_q, s1_u10_q, s1_u01_q, s1_u11_q, s1_p_q, s1_q_q;
-    logic [FracBits-1:0] s1_fx_q, s1_fy_q;
-    always_ff @(posedge clk_i) begin
-      if (adv) begin
-        s1_u00_q <= s0_u00_q && !s0_zero_q;
-        s1_u10_q <= s0_u10_q && !s0_zero_q;
-        s1_u01_q <= s0_u01_q && !s0_zero_q;
-        s1_u11_q <= s0_u11_q && !s0_zero_q;
-        s1_p_q   <= s0_p_q;
-        s1_q_q   <= s0_q_q;
-        s1_fx_q  <= s0_fx_q;
-        s1_fy_q  <= s0_fy_q;
-        s1_sub_q <= s0_sub_q;
-      end
-    end
-
-    logic [PixW-1:0] f00, f10, f01, f11;
-    logic [4*PixW-1:0] tap_px;  // the addressed pixel of RAM (r, c) at [(r*2 + c)*PixW]
-    for (genvar r = 0; r < 2; r++) begin : gen_tr
-      for (genvar c = 0; c < 2; c++) begin : gen_tc
-        if (Q > 1) begin : gen_q
-          assign tap_px[(r*2 + c)*PixW +: PixW] =
-              rd_word[(r*2 + c)*WordW + s1_sub_q[c]*PixW +: PixW];
-        end else begin : gen_1
-          assign tap_px[(r*2 + c)*PixW +: PixW] = rd_word[(r*2 + c)*WordW +: WordW];
+        if (Banks > 1) begin : gen_bank_sel
+          always_ff @(posedge clk_i) begin
+            if (adv) begin
+              bank1_q <= addr_q[AddrW-1:BankAW];
+              bank2_q <= bank1_q;
+            end
+          end
+        end else begin : gen_bank_one
+          assign bank1_q = '0;
+          assign bank2_q = '0;
         end
+        for (genvar b = 0; b < Banks; b++) begin : gen_bank
+          localparam int unsigned BD  = (Depth - b * BankD < BankD) ? Depth - b * BankD : BankD;
+          localparam int unsigned BAW = (BD > 1) ? $clog2(BD) : 1;
+          logic [WordW-1:0] word;
+          scw_ram_sdp #(
+            .Width(WordW),
+            .Depth(BD)
+          ) u_ram (
+            .clk_i,
+            .wr_en_i  (wr_en_q[(r*2 + c)*Banks + b]),
+            .wr_addr_i(wr_addr_q[BAW-1:0]),
+            .wr_data_i(wr_word_q[c*WordW +: WordW]),
+            .rd_en_i  (adv),
+            .rd_addr_i(addr_q[BAW-1:0]),
+            .rd_data_o(word)
+          );
+          always_ff @(posedge clk_i) begin
+            if (adv) bword_q[b*WordW +: WordW] <= word;
+          end
+        end
+        always_comb begin
+          picked = '0;
+          for (int b = 0; b < Banks; b++) begin
+            if (bank2_q == BankW'(b)) picked = bword_q[b*WordW +: WordW];
+          end
+        end
+        logic [PixW-1:0] pix, px_q;
+        if (Q > 1) begin : gen_sub
+          assign pix = picked[s2_sub_q[c]*PixW +: PixW];
+        end else begin : gen_one
+          assign pix = picked;
+        end
+        always_ff @(posedge clk_i) begin
+          if (adv) px_q <= s2_en_q[r*2 + c] ? pix : '0;
+        end
+        assign s3_px[(r*2 + c)*PixW +: PixW] = px_q;
+        logic unused_ram;
+        assign unused_ram = ^{addr_q, picked, bank1_q};
       end
     end
-    assign f00 = s1_u00_q ? tap_px[{s1_p_q, s1_q_q}*PixW +: PixW] : '0;
-    assign f10 = s1_u10_q ? tap_px[{s1_p_q, !s1_q_q}*PixW +: PixW] : '0;
-    assign f01 = s1_u01_q ? tap_px[{!s1_p_q, s1_q_q}*PixW +: PixW] : '0;
-    assign f11 = s1_u11_q ? tap_px[{!s1_p_q, !s1_q_q}*PixW +: PixW] : '0;
 
-    logic signed [AW-1:0] a_c, b_c, s2_a_q, s2_b_q;
-    logic signed [PixW+1:0] d10, d11;
-    logic signed [FracBits:0] fx_s;
-    logic [FracBits-1:0] s2_fy_q;
-    assign fx_s = $signed({1'b0, s1_fx_q});
-    assign d10  = $signed({2'b00, f10}) - $signed({2'b00, f00});
-    assign d11  = $signed({2'b00, f11}) - $signed({2'b00, f01});
-    assign a_c  = $signed({{(AW - PixW - FracBits){1'b0}}, f00, {FracBits{1'b0}}}) + d10 * fx_s;
-    assign b_c  = $signed({{(AW - PixW - FracBits){1'b0}}, f01, {FracBits{1'b0}}}) + d11 * fx_s;
-
+    logic s3_p_q, s3_q_q;
+    logic [FracBits-1:0] s3_fx_q, s3_fy_q;
     always_ff @(posedge clk_i) begin
       if (adv) begin
-        s2_a_q  <= a_c;
-        s2_b_q  <= b_c;
-        s2_fy_q <= s1_fy_q;
+        s3_p_q  <= s2_p_q;
+        s3_q_q  <= s2_q_q;
+        s3_fx_q <= s2_fx_q;
+        s3_fy_q <= s2_fy_q;
       end
     end
 
-    // -- s2: vertical blend, one rounding ------------------------------------------------------
-    logic signed [VW-1:0] v_c;
-    logic signed [FracBits:0] fy_s;
-    assign fy_s = $signed({1'b0, s2_fy_q});
-    assign v_c  = (VW'(s2_a_q) <<< FracBits) + (VW'(s2_b_q) - VW'(s2_a_q)) * fy_s + Half;
-    assign out_pix[l*PixW +: PixW] = v_c[2*FracBits +: PixW];
+    // -- s4: taps by parity, horizontal differences ------------------------------------------
+    logic [PixW-1:0] f00, f10, f01, f11, s4_f00_q, s4_f01_q;
+    logic signed [PixW:0] s4_d10_q, s4_d11_q;
+    logic signed [FracBits:0] s4_fx_q;
+    logic [FracBits-1:0] s4_fy_q;
+    assign f00 = s3_px[{s3_p_q, s3_q_q}*PixW +: PixW];
+    assign f10 = s3_px[{s3_p_q, !s3_q_q}*PixW +: PixW];
+    assign f01 = s3_px[{!s3_p_q, s3_q_q}*PixW +: PixW];
+    assign f11 = s3_px[{!s3_p_q, !s3_q_q}*PixW +: PixW];
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        s4_d10_q <= $signed({1'b0, f10}) - $signed({1'b0, f00});
+        s4_d11_q <= $signed({1'b0, f11}) - $signed({1'b0, f01});
+        s4_f00_q <= f00;
+        s4_f01_q <= f01;
+        s4_fx_q  <= $signed({1'b0, s3_fx_q});
+        s4_fy_q  <= s3_fy_q;
+      end
+    end
+
+    // -- s5, s6: horizontal blends a' = f00 S + d10 fx + S/2, b' likewise (one DSP each) --------
+    logic signed [AW-1:0] s5_ma_q, s5_mb_q, s5_ca_q, s5_cb_q, s6_a_q, s6_b_q;
+    logic [FracBits-1:0] s5_fy_q, s6_fy_q;
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        s5_ma_q <= AW'(s4_d10_q * s4_fx_q);
+        s5_mb_q <= AW'(s4_d11_q * s4_fx_q);
+        s5_ca_q <= $signed(AW'({s4_f00_q, 1'b1, {(FracBits - 1){1'b0}}}));
+        s5_cb_q <= $signed(AW'({s4_f01_q, 1'b1, {(FracBits - 1){1'b0}}}));
+        s5_fy_q <= s4_fy_q;
+        s6_a_q  <= s5_ma_q + s5_ca_q;
+        s6_b_q  <= s5_mb_q + s5_cb_q;
+        s6_fy_q <= s5_fy_q;
+      end
+    end
+
+    // -- s7..s9: vertical blend v = a' S + (b' - a') fy (one DSP); the output is v >> 2F -------
+    logic signed [AW:0] s7_d_q;
+    logic signed [AW-1:0] s7_a_q;
+    logic signed [FracBits:0] s7_fy_q;
+    logic signed [VW-1:0] s8_m_q, s8_c_q, s9_v_q;
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        s7_d_q  <= (AW + 1)'(s6_b_q) - (AW + 1)'(s6_a_q);
+        s7_a_q  <= s6_a_q;
+        s7_fy_q <= $signed({1'b0, s6_fy_q});
+        s8_m_q  <= VW'(s7_d_q * s7_fy_q);
+        s8_c_q  <= VW'(s7_a_q) <<< FracBits;
+        s9_v_q  <= s8_m_q + s8_c_q;
+      end
+    end
+    assign out_pix[l*PixW +: PixW] = s9_v_q[2*FracBits +: PixW];
 
     logic unused_lane;
-    assign unused_lane = ^{x0[DW-1:1+QW+CwW], x0[QW:0], x1[DW-1:1+QW+CwW], x1[QW:0],
-                           v_c[VW-1:2*FracBits+PixW], v_c[2*FracBits-1:0], dy[DW-1:SlotW],
-                           slot1[0], s1_sub_q};
+    assign unused_lane = ^{s9_v_q[VW-1:2*FracBits+PixW], s9_v_q[2*FracBits-1:0], x0i[IntW-1:XW],
+                           xp1[0], slot0p1[0], s2_sub_q};
   end
 
 endmodule

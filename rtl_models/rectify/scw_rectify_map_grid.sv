@@ -20,10 +20,17 @@
 // are read in one cycle; RAM address {j >> 1, i >> 1}. A beat's P pixels share their knots
 // (G >= P). Knot addresses beyond the grid land in RAM words no read addresses.
 //
-// Pipeline under one enable (adv = !out_valid || out_ready), Latency = 5:
+// Pipeline under one enable (adv = !out_valid || out_ready), Latency = 11:
 //   issue: RAM addresses from the raster counters (sampled at the issuing edge)
-//   s0 knot words -> pick K00..K11 by parity -> s1 vertical blends L, R -> s2 horizontal
-//   blends c per pixel -> s3 round, clamp -> out register.
+//   s0 knot words (block RAM)  -> s1 knot words in registers (nothing behind a block RAM)
+//   -> s2 K00, K10 and the vertical differences K01 - K00, K11 - K10 (DSP A/B registers)
+//   -> s3 products, C = K G (DSP M/C) -> s4 L, R (DSP P)
+//   -> s5 R - L -> s6 (R - L) du per pixel (DSP M) -> s7 (DSP P), L G + 2^(s-1)
+//   -> s8 c + 2^(s-1) -> s9 m = that >>> s and its compares with the bounds
+//   -> s10 clamp: the output register.
+// The lanes share R - L and L G + 2^(s-1), so these stay in the fabric (a register feeding
+// several DSPs cannot be their A or C register) and the sum follows the DSP's P register.
+// cfg_* are static: set them before rst_ni rises (registered without reset).
 module scw_rectify_map_grid #(
   parameter int unsigned Ppc          /*verilator public*/ = 1,
   parameter int unsigned MaxWidthPx   /*verilator public*/ = 64,
@@ -63,7 +70,7 @@ module scw_rectify_map_grid #(
   output logic              out_eol_o
 );
   /* verilator lint_off UNUSEDPARAM */
-  localparam int unsigned Latency      /*verilator public*/ = 5;
+  localparam int unsigned Latency      /*verilator public*/ = 11;
   localparam int unsigned MapCoordBits /*verilator public*/ = CoordBits;
   localparam int unsigned KnotBits     /*verilator public*/ = KBits;
   localparam int unsigned KnotColBits  /*verilator public*/ = KColW;
@@ -78,14 +85,10 @@ module scw_rectify_map_grid #(
   localparam int unsigned BAddrW = BRowW + BColW;
   localparam int unsigned BDepth = 1 << BAddrW;
   localparam int unsigned Shift  = 2 * GridLog2 + KnotFracBits - FracBits;
-  // Signed widths. L, R are knots times G in convex combination, c knots times G^2: the final
-  // values fit these exactly (intermediate wrap-around cancels in two's complement), and the
-  // multiplier operands are the differences, KBits + 1 and LW + 1 bits (25 x 5 at 1280 x 480,
-  // G = 16: one DSP48E1 each).
-  localparam int unsigned LW     = KBits + GridLog2;      // vertical blend L, R
-  localparam int unsigned CW     = LW + GridLog2;         // horizontal blend c
-  localparam logic signed [CW-1:0] Half = CW'(1) <<< (Shift - 1);
-  localparam logic signed [CW-1:0] Lo   = -(CW'(1) <<< FracBits);
+  // Signed widths (LW, CW below). L, R are knots times G in convex combination, c knots times
+  // G^2: the final values fit exactly (intermediate wrap-around cancels in two's complement),
+  // and the multiplier operands are the differences, KBits + 1 and LW + 1 bits (25 x 5 at
+  // 1280 x 480, G = 16: one DSP48E1 each).
 
   if (Ppc != 1 && Ppc != 2 && Ppc != 4) begin : gen_bad_ppc
     $error("scw_rectify_map_grid: Ppc must be 1, 2 or 4");
@@ -101,25 +104,42 @@ module scw_rectify_map_grid #(
     $error("scw_rectify_map_grid: need KnotFracBits >= FracBits");
   end
 
+  // ---- configuration ---------------------------------------------------------------------
+  localparam int unsigned LW     = KBits + GridLog2;      // vertical blend L, R
+  localparam int unsigned CW     = LW + GridLog2;         // horizontal blend c
+  localparam logic signed [CW-1:0] Half = CW'(1) <<< (Shift - 1);
+  localparam logic signed [CW-1:0] Lo   = -(CW'(1) <<< FracBits);
+  localparam int unsigned Latency1 = Latency - 1;
+
+  logic [ColW-1:0] last_col_cfg;
+  logic [HW-1:0] last_row_cfg;
+  logic signed [CW-1:0] hi_x, hi_y;
+  always_ff @(posedge clk_i) begin
+    last_col_cfg <= ColW'((cfg_width_i >> PpcLog) - 1'b1);
+    last_row_cfg <= cfg_height_i - 1'b1;
+    hi_x         <= $signed(CW'(cfg_width_i) << FracBits);
+    hi_y         <= $signed(CW'(cfg_height_i) << FracBits);
+  end
+
   // ---- issue: raster counters, knot RAM addresses ----------------------------------------
-  logic adv, issue, last_col, last_row, out_valid_q;
-  logic [ColW-1:0] col_q, last_col_cfg;
+  logic adv, issue, last_col, last_row;
+  logic [ColW-1:0] col_q;
   logic [HW-1:0] row_q;
   logic [UW-1:0] u;
   logic [KColW-1:0] ki;
   logic [KRowW-1:0] kj;
   logic [GridLog2-1:0] du0, dv;
+  logic [Latency-1:0] vld_q, sof_q, eol_q;  // bit k: stage k
 
-  assign adv          = !out_valid_q || out_ready_i;
-  assign issue        = adv && run_i;
-  assign last_col_cfg = ColW'((cfg_width_i >> PpcLog) - 1'b1);
-  assign last_col     = col_q == last_col_cfg;
-  assign last_row     = row_q == cfg_height_i - 1'b1;
-  assign u            = UW'(col_q) << PpcLog;
-  assign ki           = KColW'(u >> GridLog2);
-  assign kj           = KRowW'(row_q >> GridLog2);
-  assign du0          = u[GridLog2-1:0];
-  assign dv           = row_q[GridLog2-1:0];
+  assign adv      = !vld_q[Latency1] || out_ready_i;
+  assign issue    = adv && run_i;
+  assign last_col = col_q == last_col_cfg;
+  assign last_row = row_q == last_row_cfg;
+  assign u        = UW'(col_q) << PpcLog;
+  assign ki       = KColW'(u >> GridLog2);
+  assign kj       = KRowW'(row_q >> GridLog2);
+  assign du0      = u[GridLog2-1:0];
+  assign dv       = row_q[GridLog2-1:0];
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -145,15 +165,17 @@ module scw_rectify_map_grid #(
   assign ra1 = kj[KRowW-1:1];
 
   // ---- knot RAMs: (row parity r, column parity c) at index r*2 + c -------------------------
+  // s0 is the RAMs' own read register; s1 copies it into the fabric, so that block RAM
+  // clock-to-out (most of a clock) has nothing behind it.
   logic [KColW-1:0] wcol;
   logic [KRowW-1:0] wrow;
-  logic [4*KnotW-1:0] rd_word;
+  logic [4*KnotW-1:0] s1_word_q;
   assign wcol = knot_addr_i[KColW-1:0];
   assign wrow = knot_addr_i[KAddrW-1:KColW];
 
   for (genvar r = 0; r < 2; r++) begin : gen_r
     for (genvar c = 0; c < 2; c++) begin : gen_c
-      logic [KnotW-1:0] word;
+      logic [KnotW-1:0] word, word_q;
       scw_ram_sdp #(
         .Width(KnotW),
         .Depth(BDepth)
@@ -166,131 +188,137 @@ module scw_rectify_map_grid #(
         .rd_addr_i({(r == 0) ? ra0 : ra1, (c == 0) ? ca0 : ca1}),
         .rd_data_o(word)
       );
-      assign rd_word[(r*2 + c)*KnotW +: KnotW] = word;
+      always_ff @(posedge clk_i) begin
+        if (adv) word_q <= word;
+      end
+      assign s1_word_q[(r*2 + c)*KnotW +: KnotW] = word_q;
     end
   end
 
   // ---- pipeline control --------------------------------------------------------------------
-  logic s0_valid_q, s1_valid_q, s2_valid_q, s3_valid_q;
-  logic s0_sof_q, s1_sof_q, s2_sof_q, s3_sof_q, out_sof_q;
-  logic s0_eol_q, s1_eol_q, s2_eol_q, s3_eol_q, out_eol_q;
-  logic s0_ip_q, s0_jp_q;
-  logic [GridLog2-1:0] s0_du_q, s1_du_q, s2_du_q, s0_dv_q, s1_dv_q;
+  logic s0_ip_q, s0_jp_q, s1_ip_q, s1_jp_q;
+  logic [GridLog2-1:0] s0_du_q, s1_du_q, s2_du_q, s3_du_q, s4_du_q, s0_dv_q, s1_dv_q;
   logic [MapW-1:0] out_data_q, out_c;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      s0_valid_q  <= 1'b0;
-      s1_valid_q  <= 1'b0;
-      s2_valid_q  <= 1'b0;
-      s3_valid_q  <= 1'b0;
-      out_valid_q <= 1'b0;
+      vld_q <= '0;
     end else if (adv) begin
-      s0_valid_q  <= issue;
-      s1_valid_q  <= s0_valid_q;
-      s2_valid_q  <= s1_valid_q;
-      s3_valid_q  <= s2_valid_q;
-      out_valid_q <= s3_valid_q;
+      vld_q <= {vld_q[Latency-2:0], issue};
     end
   end
 
   always_ff @(posedge clk_i) begin
     if (adv) begin
-      s0_sof_q   <= (col_q == '0) && (row_q == '0);
-      s0_eol_q   <= last_col;
+      sof_q      <= {sof_q[Latency-2:0], (col_q == '0) && (row_q == '0)};
+      eol_q      <= {eol_q[Latency-2:0], last_col};
       s0_ip_q    <= ki[0];
       s0_jp_q    <= kj[0];
       s0_du_q    <= du0;
       s0_dv_q    <= dv;
-      s1_sof_q   <= s0_sof_q;
-      s1_eol_q   <= s0_eol_q;
+      s1_ip_q    <= s0_ip_q;
+      s1_jp_q    <= s0_jp_q;
       s1_du_q    <= s0_du_q;
       s1_dv_q    <= s0_dv_q;
-      s2_sof_q   <= s1_sof_q;
-      s2_eol_q   <= s1_eol_q;
       s2_du_q    <= s1_du_q;
-      s3_sof_q   <= s2_sof_q;
-      s3_eol_q   <= s2_eol_q;
-      out_sof_q  <= s3_sof_q;
-      out_eol_q  <= s3_eol_q;
+      s3_du_q    <= s2_du_q;
+      s4_du_q    <= s3_du_q;
       out_data_q <= out_c;
     end
   end
 
-  assign out_valid_o = out_valid_q;
+  assign out_valid_o = vld_q[Latency1];
   assign out_data_o  = out_data_q;
-  assign out_sof_o   = out_sof_q;
-  assign out_eol_o   = out_eol_q;
+  assign out_sof_o   = sof_q[Latency1];
+  assign out_eol_o   = eol_q[Latency1];
 
-  // ---- s0: pick the four knots by parity ---------------------------------------------------
+  // ---- s1 -> s2: pick the four knots by parity ----------------------------------------------
   // K00 is in RAM (j[0], i[0]), K10 in (j[0], !i[0]), K01 in (!j[0], i[0]), K11 in the fourth.
-  logic [KnotW-1:0] b00, b01, b10, b11, top0, top1, bot0, bot1;
-  logic [KnotW-1:0] s1_k00_q, s1_k10_q, s1_k01_q, s1_k11_q;
-  assign b00  = rd_word[0*KnotW +: KnotW];  // even row, even column
-  assign b01  = rd_word[1*KnotW +: KnotW];  // even row, odd column
-  assign b10  = rd_word[2*KnotW +: KnotW];  // odd row, even column
-  assign b11  = rd_word[3*KnotW +: KnotW];  // odd row, odd column
-  assign top0 = s0_jp_q ? b10 : b00;        // knot row j, even column
-  assign top1 = s0_jp_q ? b11 : b01;        // knot row j, odd column
-  assign bot0 = s0_jp_q ? b00 : b10;        // knot row j + 1
-  assign bot1 = s0_jp_q ? b01 : b11;
+  logic [KnotW-1:0] b00, b01, b10, b11, top0, top1, bot0, bot1, k00w, k10w, k01w, k11w;
+  assign b00  = s1_word_q[0*KnotW +: KnotW];  // even row, even column
+  assign b01  = s1_word_q[1*KnotW +: KnotW];  // even row, odd column
+  assign b10  = s1_word_q[2*KnotW +: KnotW];  // odd row, even column
+  assign b11  = s1_word_q[3*KnotW +: KnotW];  // odd row, odd column
+  assign top0 = s1_jp_q ? b10 : b00;          // knot row j, even column
+  assign top1 = s1_jp_q ? b11 : b01;          // knot row j, odd column
+  assign bot0 = s1_jp_q ? b00 : b10;          // knot row j + 1
+  assign bot1 = s1_jp_q ? b01 : b11;
+  assign k00w = s1_ip_q ? top1 : top0;
+  assign k10w = s1_ip_q ? top0 : top1;
+  assign k01w = s1_ip_q ? bot1 : bot0;
+  assign k11w = s1_ip_q ? bot0 : bot1;
+
+  logic signed [GridLog2:0] s2_dv_q;
   always_ff @(posedge clk_i) begin
-    if (adv) begin
-      s1_k00_q <= s0_ip_q ? top1 : top0;
-      s1_k10_q <= s0_ip_q ? top0 : top1;
-      s1_k01_q <= s0_ip_q ? bot1 : bot0;
-      s1_k11_q <= s0_ip_q ? bot0 : bot1;
-    end
+    if (adv) s2_dv_q <= $signed({1'b0, s1_dv_q});
   end
 
   // ---- per coordinate (a = 0: x, a = 1: y) ---------------------------------------------------
-  logic signed [GridLog2:0] dv_s;
-  logic signed [CW-1:0] hi_x, hi_y;
-  assign dv_s = $signed({1'b0, s1_dv_q});
-  assign hi_x = $signed(CW'(cfg_width_i) << FracBits);
-  assign hi_y = $signed(CW'(cfg_height_i) << FracBits);
-
   for (genvar a = 0; a < 2; a++) begin : gen_coord
-    // -- s1: vertical blends (shared by the beat's pixels) --------------------------------------
-    logic signed [KBits-1:0] k00, k10, k01, k11;
-    logic signed [KBits:0] dl, dr;
-    logic signed [LW-1:0] l_c, r_c, s2_l_q, s2_r_q;
-    assign k00 = $signed(s1_k00_q[a*KBits +: KBits]);
-    assign k10 = $signed(s1_k10_q[a*KBits +: KBits]);
-    assign k01 = $signed(s1_k01_q[a*KBits +: KBits]);
-    assign k11 = $signed(s1_k11_q[a*KBits +: KBits]);
-    assign dl  = (KBits + 1)'(k01) - (KBits + 1)'(k00);
-    assign dr  = (KBits + 1)'(k11) - (KBits + 1)'(k10);
-    assign l_c = (LW'(k00) <<< GridLog2) + dl * dv_s;
-    assign r_c = (LW'(k10) <<< GridLog2) + dr * dv_s;
+    // -- s2..s4: vertical blends L = K00 G + (K01 - K00) dv, R likewise (one DSP each) ---------
+    logic signed [KBits-1:0] k00, k10, k01, k11, s2_k00_q, s2_k10_q;
+    logic signed [KBits:0] s2_dl_q, s2_dr_q;
+    logic signed [LW-1:0] s3_ml_q, s3_mr_q, s3_cl_q, s3_cr_q, s4_l_q, s4_r_q;
+    assign k00 = $signed(k00w[a*KBits +: KBits]);
+    assign k10 = $signed(k10w[a*KBits +: KBits]);
+    assign k01 = $signed(k01w[a*KBits +: KBits]);
+    assign k11 = $signed(k11w[a*KBits +: KBits]);
     always_ff @(posedge clk_i) begin
       if (adv) begin
-        s2_l_q <= l_c;
-        s2_r_q <= r_c;
+        s2_dl_q  <= (KBits + 1)'(k01) - (KBits + 1)'(k00);
+        s2_dr_q  <= (KBits + 1)'(k11) - (KBits + 1)'(k10);
+        s2_k00_q <= k00;
+        s2_k10_q <= k10;
+        s3_ml_q  <= LW'(s2_dl_q * s2_dv_q);
+        s3_mr_q  <= LW'(s2_dr_q * s2_dv_q);
+        s3_cl_q  <= LW'(s2_k00_q) <<< GridLog2;
+        s3_cr_q  <= LW'(s2_k10_q) <<< GridLog2;
+        s4_l_q   <= s3_ml_q + s3_cl_q;
+        s4_r_q   <= s3_mr_q + s3_cr_q;
       end
     end
 
-    // -- s2: horizontal blend per pixel; s3: round and clamp ------------------------------------
-    logic signed [CW-1:0] hi;
-    logic signed [LW:0] dlr;
-    assign hi  = (a == 0) ? hi_x : hi_y;
-    assign dlr = (LW + 1)'(s2_r_q) - (LW + 1)'(s2_l_q);
-    for (genvar l = 0; l < Ppc; l++) begin : gen_lane
-      logic [GridLog2-1:0] du;
-      logic signed [GridLog2:0] du_s;
-      logic signed [CW-1:0] c_c, s3_c_q, m, q;
-      assign du   = s2_du_q + GridLog2'(l);  // < G: a beat never crosses a knot column
-      assign du_s = $signed({1'b0, du});
-      assign c_c  = (CW'(s2_l_q) <<< GridLog2) + dlr * du_s;
-      always_ff @(posedge clk_i) begin
-        if (adv) s3_c_q <= c_c;
+    // -- s5..s7: horizontal blend per pixel, c + 2^(s-1) = L G + 2^(s-1) + (R - L) du ---------
+    logic signed [LW:0] s5_dlr_q;
+    logic signed [LW-1:0] s5_l_q, s6_l_q;
+    logic signed [CW-1:0] s7_lh_q;
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        s5_dlr_q <= (LW + 1)'(s4_r_q) - (LW + 1)'(s4_l_q);
+        s5_l_q   <= s4_l_q;
+        s6_l_q   <= s5_l_q;
+        s7_lh_q  <= (CW'(s6_l_q) <<< GridLog2) + Half;
       end
-      assign m = (s3_c_q + Half) >>> Shift;
-      assign q = (m < Lo) ? Lo : ((m > hi) ? hi : m);
+    end
+    for (genvar l = 0; l < Ppc; l++) begin : gen_lane
+      logic signed [GridLog2:0] s5_du_q;
+      logic signed [CW-1:0] s6_m_q, s7_p_q, s8_c_q, m, q;
+      always_ff @(posedge clk_i) begin
+        if (adv) begin
+          // du < G: a beat never crosses a knot column
+          s5_du_q <= $signed({1'b0, s4_du_q + GridLog2'(l)});
+          s6_m_q  <= CW'(s5_dlr_q * s5_du_q);
+          s7_p_q  <= s6_m_q;
+          s8_c_q  <= s7_p_q + s7_lh_q;
+        end
+      end
+      // -- s9: round (the shift), compare with the bounds; s10: clamp into the output register
+      logic s9_lo_q, s9_hi_q;
+      logic signed [CW-1:0] s9_m_q, hi;
+      assign hi = (a == 0) ? hi_x : hi_y;
+      assign m  = s8_c_q >>> Shift;
+      always_ff @(posedge clk_i) begin
+        if (adv) begin
+          s9_m_q  <= m;
+          s9_lo_q <= m < Lo;
+          s9_hi_q <= m > hi;
+        end
+      end
+      assign q = s9_lo_q ? Lo : (s9_hi_q ? hi : s9_m_q);
       assign out_c[(l*2 + a)*CoordBits +: CoordBits] = q[CoordBits-1:0];
 
       logic unused_lane;
-      assign unused_lane = ^q[CW-1:CoordBits];
+      assign unused_lane = ^{q[CW-1:CoordBits], s9_m_q[CW-1:CoordBits]};
     end
   end
 
