@@ -20,7 +20,7 @@ namespace scw::hls::ground {
 /// beats pass unchanged), a row too long or a sof before eol sets the sticky error(), and the
 /// next sof resynchronises.
 ///
-/// The RTL computes the window (the line buffer, 2 clocks) and the decision (2 clocks) in two
+/// The RTL computes the window (the line buffer, 3 clocks) and the decision (2 clocks) in two
 /// pipelines with an enable each; `window()` and `decide()` are those two halves, so
 /// sim::GroundModel can clock them as the RTL does.
 template <typename Params>

@@ -32,9 +32,10 @@ struct GroundParams {
   static constexpr int kRows = kWindowRows;
   /// The 10 rows above, one 16-bit disparity per column and row.
   using line_params = LineBufferParams<1, MaxWidthPx, kRows>;
-  /// Cycles from accepting a beat to presenting it without stalls: the line buffer's RAM read and
-  /// output register, then the decision (scw_ground's Latency, checked at compile time).
-  static constexpr int kLineLatency = line_params::kLatency;
+  /// Cycles from accepting a beat to presenting it without stalls: the line buffer's RAM read,
+  /// the RAM's output register (scw_line_buffer with RdReg) and its output register, then the
+  /// decision (scw_ground's Latency, checked at compile time).
+  static constexpr int kLineLatency = line_params::kLatency + 1;
   static constexpr int kLatency = kLineLatency + kDecideLatency;
   using in_beat = Beat<disp_t, 1>;
   using out_beat = Beat<disp_t, 1>;

@@ -206,8 +206,8 @@ TEST_CASE("the frame function (the HLS top) equals the cycle model", "[hls][grou
 }
 
 TEST_CASE("latency is the named constant, one beat per clock", "[hls][ground]") {
-  STATIC_REQUIRE(Params::kLatency == 4);
-  STATIC_REQUIRE(Params::kLineLatency == scw::hls::LineBufferParams<1, 64, 11>::kLatency);
+  STATIC_REQUIRE(Params::kLatency == 5);
+  STATIC_REQUIRE(Params::kLineLatency == scw::hls::LineBufferParams<1, 64, 11>::kLatency + 1);
   const std::vector<cv::Mat> maps{noisy_scene(64, 20, 5)};
   const auto beats = map_beats(maps);
   Model m{GroundConfig{}};

@@ -7,6 +7,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
+#include "Vground_lb.h"
+#include "Vground_lb_scw_line_buffer.h"
 #include "Vground_w20.h"
 #include "Vground_w20_scw_ground.h"
 #include "Vground_w32.h"
@@ -14,6 +16,8 @@
 #include "host/disparity/run_model.hpp"
 #include "sim/ground_model.hpp"
 #include "sim/ground_rtl.hpp"
+#include "sim/pipeline_shell.hpp"
+#include "sim/rtl_stream.hpp"
 #include "tests/common/twin_check.hpp"
 #include "tests/ground/ground_maps.hpp"
 
@@ -28,6 +32,11 @@ using Params32 = GroundParams<32>;
 using Params20 = GroundParams<20>;  // not a power of two: the RAM is not full depth
 static_assert(scw::sim::ground_params_match<Vground_w32_scw_ground, Params32>());
 static_assert(scw::sim::ground_params_match<Vground_w20_scw_ground, Params20>());
+// tests/ground/rtl.cmake: scw_line_buffer as scw_ground<32> instantiates it (two 8-bit lanes a
+// disparity, RdReg), its latency the stage's kLineLatency.
+static_assert(Vground_lb_scw_line_buffer::Ppc == 2 && Vground_lb_scw_line_buffer::MaxWidthPx == 64 &&
+              Vground_lb_scw_line_buffer::Rows == Params32::kRows &&
+              Vground_lb_scw_line_buffer::Latency == Params32::kLineLatency);
 
 /// One run of each twin on the same beats.
 struct TwinRun {
@@ -109,6 +118,29 @@ TEST_CASE("scw_ground equals the model clock for clock on random maps of several
   SECTION("a build 20 wide") {
     check_maps<Vground_w20, Params20>(
         {noisy_scene(20, 30, 7), noisy_scene(13, 14, 8), uniform_map(20, 12, 9)}, GroundConfig{});
+  }
+}
+
+TEST_CASE("the stage's line buffer, RAM output registered, equals hls::LineBuffer beat for beat",
+          "[ground][rtl]") {
+  // Rows of one and two beats: a beat reads the column the previous beat, or the one before
+  // it, has not written back yet (the two forwarded words); then full and odd widths.
+  using Kernel = scw::hls::LineBuffer<std::uint16_t, Params32::line_params>;
+  using Shell = scw::sim::PipelineShell<Kernel, Params32::kLineLatency>;
+  using Rtl = scw::sim::RtlStream<Vground_lb, Kernel::in_type, Kernel::out_type>;
+  const int sizes[][2] = {{32, 14}, {1, 12}, {2, 13}, {3, 12}, {1, 1}, {2, 2}, {17, 13}, {32, 12}};
+  std::vector<cv::Mat> maps;
+  std::uint64_t s = 40;
+  for (const auto& wh : sizes) maps.push_back(noisy_scene(wh[0], wh[1], s++));
+  const auto beats = map_beats(maps);
+  for (const auto& pattern : StallPattern::all(3)) {
+    INFO("stalls " << pattern.name());
+    Shell cpp;
+    Rtl rtl("line_buffer");
+    const auto rc = scw::sim::run_stream(cpp, beats, pattern, beats.size());
+    const auto rr = scw::sim::run_stream(rtl, beats, pattern, beats.size());
+    scw::test::check_twin_runs(rc, rr);
+    CHECK(rr.out.size() == beats.size());
   }
 }
 
