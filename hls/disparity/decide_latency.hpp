@@ -7,19 +7,19 @@ namespace scw::hls::disparity {
 /// Clocks from a beat on scw_disparity_decide's inputs to its decide() value on disp_o, for a
 /// unit built with `num_disp` candidates (its Latency parameter; the unit test checks both).
 constexpr int decide_latency(int num_disp) {
-  // The argmin tree has ceil(log2 num_disp) comparator levels and a register after every two
-  // (the first stage takes one when the count is odd), so ceil(levels / 2) stages.
+  // The argmin tree has ceil(log2 num_disp) comparator levels, each registered (two
+  // compare-and-select levels in a row make too long a path).
   int levels = 0;
   while ((1 << levels) < num_disp) ++levels;
-  const int tree = (levels + 1) / 2;
-  // A: m * U needs a multiplier of its own, registered before the next one; beside it
-  //    dmin + best, the limit and uniqueness-mask compares, and the sub-pixel differences.
-  // B: floor(m * U / 100) by a reciprocal multiply (the second multiplier); beside it two
-  //    restoring-division steps of the sub-pixel fraction.
-  // C: thresh = m + floor(m * U / 100) then its compare against every candidate (an adder then
-  //    a comparator); beside it the last division step and its remainder compare.
-  // D: the OR over every candidate's rejection and the output select, registered on disp_o.
-  return tree + 4;
+  const int tree = levels;
+  // A: m * K[16:0] and m * K[high] (K = ceil(U 2^s / 100)) into the DSPs' M registers; beside
+  //    them dmin + best, the limit and uniqueness-mask compares, the sub-pixel differences.
+  // B: the DSPs' P registers; the sign picks |diff| and mx.
+  // C: floor(m U / 100) = (lo + hi 2^17) >> s; quotient bit 2; 17 mx.
+  // D: thresh = m + floor(m U / 100); quotient bit 1; the SADs out of their shift register.
+  // E: thresh against every candidate; quotient bit 0 and the rounding compares.
+  // F: the OR of every rejection and the value, registered on disp_o.
+  return tree + 6;
 }
 
 }  // namespace scw::hls::disparity

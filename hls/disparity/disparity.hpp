@@ -146,9 +146,9 @@ class Disparity {
   static constexpr int P = Params::kPpc;
   static constexpr int R = Params::kRadius;
   /// Clocks from feeding a beat to the core to reading its results: the prefilter's read (the
-  /// raw path is delayed as much, so both modes share one latency), kFrontLatency to the window
+  /// raw path is delayed as much, so both modes share one latency), front_latency to the window
   /// sums, the decision unit, and the queue's write.
-  static constexpr int kLatency = XSobel<Params>::kReadLatency + kFrontLatency +
+  static constexpr int kLatency = XSobel<Params>::kReadLatency + front_latency(P) +
                                   decide_latency(Params::kNumDisp) + 1;
   /// Result queue in pixels, a power of two per lane: room for the pipeline's kLatency beats,
   /// the beat being fed and the one being read (docs/disparity.md).

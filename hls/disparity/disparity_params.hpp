@@ -52,8 +52,10 @@ struct DisparityConfig {
 };
 
 /// Clocks from a beat entering the core's datapath to its window sums entering the decision
-/// unit: RAM read, shift and absolute differences, column sums, window sums (docs/disparity.md).
-inline constexpr int kFrontLatency = 4;
+/// unit at `ppc` pixels a beat (scw_disparity_sums' Latency): the line-buffer read and its
+/// output register, shift and absolute differences, column sums, C(x) - C(x - N), log2(ppc)
+/// levels of prefix sums across the lanes, the window sums (docs/disparity.md).
+constexpr int front_latency(int ppc) { return 7 + (ppc == 4 ? 2 : ppc == 2 ? 1 : 0); }
 
 /// The smallest power of two >= n: the result queue's depth in beats.
 constexpr int queue_words(int n) {

@@ -24,9 +24,10 @@ class XSobel {
   static constexpr int W = Params::kMaxWidthPx;
   static constexpr int kSlots = 5;
   /// Clocks from a read to its beat in the RTL twin (rtl_models/disparity/
-  /// scw_disparity_prefilter.sv: RAM read, row select, sum and clamp); read() itself returns
-  /// the beat at once, so the RTL's out_valid_o is the read delayed by this many clocks.
-  static constexpr int kReadLatency = 3;
+  /// scw_disparity_prefilter.sv: RAM read, the RAM's output register, row select, sum and
+  /// clamp); read() itself returns the beat at once, so the RTL's out_valid_o is the read
+  /// delayed by this many clocks.
+  static constexpr int kReadLatency = 4;
   using beat = typename Params::pixel_beat;
 
   void configure(int width, int height, int cap) {

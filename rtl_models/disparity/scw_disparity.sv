@@ -71,12 +71,12 @@ module scw_disparity #(
   localparam int unsigned SlotW     = $clog2(Window + 1);
   localparam int unsigned SadBits   = $clog2(Window * Window * 255 + 1);
   // Latencies, each the twin of a C++ constant (checked by the RTL test at compile time):
-  // XSobel::kReadLatency, kFrontLatency, decide_latency(NumDisp) (its tree has two comparator
-  // levels per stage).
-  localparam int unsigned PfLatency    = 3;
-  localparam int unsigned SumsLatency  = 4;
-  localparam int unsigned TreeStages   = ($clog2(NumDisp) + 1) / 2;
-  localparam int unsigned DecLatency   = TreeStages + 4;
+  // XSobel::kReadLatency, front_latency(Ppc), decide_latency(NumDisp) (a register after every
+  // comparator level of its tree).
+  localparam int unsigned PfLatency    = 4;
+  localparam int unsigned SumsLatency  = 7 + ((Ppc > 1) ? $clog2(Ppc) : 0);
+  localparam int unsigned TreeStages   = $clog2(NumDisp);
+  localparam int unsigned DecLatency   = TreeStages + 6;
   /* verilator lint_off UNUSEDPARAM */
   localparam int unsigned ResultLatency /*verilator public*/ =
       PfLatency + SumsLatency + DecLatency + 1;

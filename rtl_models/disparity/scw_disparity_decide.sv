@@ -61,36 +61,25 @@ module scw_disparity_decide #(
   localparam int unsigned Levels     = $clog2(NumDisp);
   localparam int unsigned Leaves     = 1 << Levels;
   localparam int unsigned IdxW       = Levels;
-  localparam int unsigned TreeStages = (Levels + 1) / 2;
+  localparam int unsigned TreeStages = Levels;
   localparam int unsigned SadW       = NumDisp * SadBits;
   localparam int unsigned NodeW      = IdxW + 3 * SadBits;
-  localparam int unsigned ProdW      = SadBits + 8;  // p = m * U
-  localparam int unsigned QuarW      = ProdW - 2;    // floor(p / 4)
   localparam int unsigned ThrW       = SadBits + 2;  // thresh <= 3.55 m
   localparam int unsigned DispW      = 12;           // the bits of d that reach d * 16
-  localparam logic [63:0] QuarMax    = (((64'd1 << SadBits) - 64'd1) * 64'd255) >> 2;
-
-  // Smallest k with floor(x / 25) == (x * ceil(2^k / 25)) >> k for every x <= xmax. With
-  // e = 25 ceil(2^k / 25) - 2^k, x = 25 q + r: x ceil(2^k / 25) / 2^k = q + (r + x e / 2^k) / 25,
-  // below q + 1 for every r <= 24 when xmax e < 2^k. k = w + 5 always qualifies (e < 25 < 2^5).
-  function automatic int unsigned recip_shift(input int unsigned w, input logic [63:0] xmax);
-    logic [63:0] two_k, e;
-    recip_shift = w + 5;
-    for (int j = 5; j >= 0; j--) begin
-      two_k = 64'd1 << (w + 32'(j));
-      e     = ((two_k + 64'd24) / 64'd25) * 64'd25 - two_k;
-      if (xmax * e < two_k) recip_shift = w + 32'(j);
-    end
-  endfunction
-
   /* verilator lint_off UNUSEDPARAM */
-  localparam int unsigned Latency    /*verilator public*/ = TreeStages + 4;
+  localparam int unsigned Latency    /*verilator public*/ = TreeStages + 6;
   /* verilator lint_on UNUSEDPARAM */
-  localparam int unsigned RecipShift /*verilator public*/ = recip_shift(QuarW, QuarMax);
-  localparam int unsigned RecipMul   /*verilator public*/ =
-      32'(((64'd1 << RecipShift) + 64'd24) / 64'd25);
-  localparam int unsigned RecipW     = $clog2(RecipMul + 1);
-  localparam int unsigned MulW       = QuarW + RecipW;
+  // floor(m U / 100) = (m K) >> KShift with K = ceil(U 2^KShift / 100): with
+  // e = 100 K - U 2^KShift in 0 .. 99, m K / 2^KShift = m U / 100 + m e / (100 2^KShift), and
+  // frac(m U / 100) <= 99 / 100, so the floor holds when m e < 2^KShift, true for every
+  // m < 2^SadBits at KShift = SadBits + 7. K < 2.56 2^KShift: KShift + 2 bits, split at 17
+  // bits so that each part is one DSP48E1 product (the unit test checks every m and U).
+  localparam int unsigned KShift     /*verilator public*/ = SadBits + 7;
+  localparam int unsigned KW         = KShift + 2;
+  localparam int unsigned KSplit     = 17;
+  localparam int unsigned LoW        = SadBits + KSplit;       // m K[16:0]
+  localparam int unsigned HiW        = SadBits + KW - KSplit;  // m K[KW-1:17]
+  localparam int unsigned SumW       = SadBits + KW;
 
   if (NumDisp < 2 || NumDisp > 128) begin : gen_bad_num
     $error("scw_disparity_decide: NumDisp must be 2 .. 128");
@@ -117,7 +106,6 @@ module scw_disparity_decide #(
   logic [IdxW-1:0] last_q;
   logic [SadBits-1:0] lim_q, tex_q;
   logic lim_en_q, tex_en_q, tex_all_q, uniq_en_q, sub_q;
-  logic [7:0] uniq_q;
   logic [DminBits-1:0] dmin_q;
   logic [15:0] invalid_q;
   always_ff @(posedge clk_i) begin
@@ -132,10 +120,22 @@ module scw_disparity_decide #(
     tex_all_q <= !cfg_texture_i[31] && cfg_texture_i[30:SadBits] != '0;
     tex_q     <= cfg_texture_i[SadBits-1:0];
     uniq_en_q <= cfg_uniqueness_i != '0;
-    uniq_q    <= cfg_uniqueness_i;
     sub_q     <= cfg_subpixel_i;
     dmin_q    <= cfg_dmin_i;
     invalid_q <= cfg_invalid_i;
+  end
+
+  // K for every U: a 256-word ROM in LUTs (U is static, so K is too).
+  function automatic logic [KW-1:0] k_of(input logic [7:0] u);
+    k_of = '0;
+    for (int i = 0; i < 256; i++) begin
+      if (u == 8'(i)) k_of = KW'(((64'(i) << KShift) + 64'd99) / 64'd100);
+    end
+  endfunction
+  logic [KSplit-1:0] k_lo_q;
+  logic [KW-KSplit-1:0] k_hi_q;
+  always_ff @(posedge clk_i) begin
+    {k_hi_q, k_lo_q} <= k_of(cfg_uniqueness_i);
   end
 
   // ---- valid pipeline and the per-pixel side signals ------------------------------------
@@ -150,11 +150,11 @@ module scw_disparity_decide #(
   // compare in stage C. Plain shifts without reset, so they map to SRLs.
   logic tex_rej;
   logic [2*TreeStages-1:0] side_q;
-  logic [(TreeStages+2)*SadW-1:0] sads_q;
+  logic [(TreeStages+3)*SadW-1:0] sads_q;
   assign tex_rej = tex_all_q || (tex_en_q && texture_i < tex_q);
   always_ff @(posedge clk_i) begin
     side_q <= (2 * TreeStages)'({side_q, region_i, tex_rej});
-    sads_q <= ((TreeStages + 2) * SadW)'({sads_q, sad_i});
+    sads_q <= ((TreeStages + 3) * SadW)'({sads_q, sad_i});
   end
 
   // ---- t1 .. tT: argmin tree ------------------------------------------------------------
@@ -205,12 +205,8 @@ module scw_disparity_decide #(
         assign b   = gen_lvl[l-1].v[2*k+1];
         // Strict <: on a tie the left child, the smaller d, wins, as in decide()'s loop.
         assign win = (b[NodeSad +: SadBits] < a[NodeSad +: SadBits]) ? b : a;
-        // Registered every second level counted from the root, the root included.
-        if ((Levels - l) % 2 == 0) begin : gen_reg
-          always_ff @(posedge clk_i) v[k] <= win;
-        end else begin : gen_comb
-          assign v[k] = win;
-        end
+        // Every level registered: two compare-and-select levels in a row are too long a path.
+        always_ff @(posedge clk_i) v[k] <= win;
       end
     end
   end
@@ -238,28 +234,52 @@ module scw_disparity_decide #(
     end
     assign far[d] = uniq_en_q && in_use_q[d] && (above || below);
   end
-  // Both differences and both distances to m at once, chosen by the sign: one carry chain deep.
+  // Both differences and both distances to m, registered; the sign picks them in B.
   assign neg = root.prev < root.next;
   assign pn  = root.prev - root.next;
   assign np  = root.next - root.prev;
   assign pm  = root.prev - root.sad;
   assign nm  = root.next - root.sad;
 
-  logic [QuarW-1:0] a_p4_q;
-  logic [SadBits-1:0] a_m_q, a_a_q, a_mx_q;
+  logic [LoW-1:0] a_lo_q;
+  logic [HiW-1:0] a_hi_q;
+  logic [SadBits-1:0] a_m_q, a_pn_q, a_np_q, a_pm_q, a_nm_q;
   logic [DispW-1:0] a_d_q;
   logic [NumDisp-1:0] a_far_q;
   logic a_inv_q, a_fit_q, a_neg_q;
   always_ff @(posedge clk_i) begin
-    a_p4_q   <= QuarW'((ProdW'(root.sad) * ProdW'(uniq_q)) >> 2);
-    a_m_q    <= root.sad;
-    a_inv_q  <= !t_region || t_tex_rej || (lim_en_q && root.sad > lim_q);
-    a_d_q    <= DispW'(dmin_q) + DispW'(root.idx);
-    a_fit_q  <= sub_q && root.idx != '0 && root.idx != last_q;
-    a_far_q  <= far;
-    a_neg_q  <= neg;
-    a_a_q    <= neg ? np : pn;
-    a_mx_q   <= neg ? nm : pm;
+    a_lo_q  <= LoW'(root.sad) * LoW'(k_lo_q);  // the DSPs' M registers
+    a_hi_q  <= HiW'(root.sad) * HiW'(k_hi_q);
+    a_m_q   <= root.sad;
+    a_inv_q <= !t_region || t_tex_rej || (lim_en_q && root.sad > lim_q);
+    a_d_q   <= DispW'(dmin_q) + DispW'(root.idx);
+    a_fit_q <= sub_q && root.idx != '0 && root.idx != last_q;
+    a_far_q <= far;
+    a_neg_q <= neg;
+    a_pn_q  <= pn;
+    a_np_q  <= np;
+    a_pm_q  <= pm;
+    a_nm_q  <= nm;
+  end
+
+  // ---- B: the products out of the DSPs; |diff| and mx -----------------------------------
+  logic [LoW-1:0] b_lo_q;
+  logic [HiW-1:0] b_hi_q;
+  logic [SadBits-1:0] b_m_q, b_a_q, b_mx_q;
+  logic [DispW-1:0] b_d_q;
+  logic [NumDisp-1:0] b_far_q;
+  logic b_inv_q, b_fit_q, b_neg_q;
+  always_ff @(posedge clk_i) begin
+    b_lo_q  <= a_lo_q;  // the DSPs' P registers
+    b_hi_q  <= a_hi_q;
+    b_m_q   <= a_m_q;
+    b_inv_q <= a_inv_q;
+    b_d_q   <= a_d_q;
+    b_fit_q <= a_fit_q;
+    b_far_q <= a_far_q;
+    b_neg_q <= a_neg_q;
+    b_a_q   <= a_neg_q ? a_np_q : a_pn_q;
+    b_mx_q  <= a_neg_q ? a_nm_q : a_pm_q;
   end
 
   // One restoring division step: {quotient bit, remainder} of 2 r / mx, given r <= mx.
@@ -271,67 +291,99 @@ module scw_disparity_decide #(
     else div_step = {1'b0, t[SadBits-1:0]};
   endfunction
 
-  // ---- B: floor(p / 100), quotient bits 2 and 1 -----------------------------------------
-  logic [SadBits:0] b_s2, b_s1;
-  assign b_s2 = div_step(a_a_q, a_mx_q);
-  assign b_s1 = div_step(b_s2[SadBits-1:0], a_mx_q);
+  // ---- C: floor(m U / 100) = (lo + hi 2^17) >> KShift, quotient bit 2, 17 mx, d - 1 ------
+  logic [SadBits:0] c_s2;
+  assign c_s2 = div_step(b_a_q, b_mx_q);
 
-  logic [ThrW-1:0] b_q100_q;
-  logic [SadBits-1:0] b_m_q, b_r_q, b_mx_q;
-  logic [DispW-1:0] b_d_q, b_dm1_q;
-  logic [NumDisp-1:0] b_far_q;
-  logic [1:0] b_qhi_q;
-  logic b_inv_q, b_fit_q, b_neg_q;
-  always_ff @(posedge clk_i) begin
-    b_q100_q <= ThrW'((MulW'(a_p4_q) * MulW'(RecipMul)) >> RecipShift);
-    b_m_q    <= a_m_q;
-    b_inv_q  <= a_inv_q;
-    b_d_q    <= a_d_q;
-    b_dm1_q  <= a_d_q - 1'b1;
-    b_fit_q  <= a_fit_q;
-    b_far_q  <= a_far_q;
-    b_neg_q  <= a_neg_q;
-    b_qhi_q  <= {b_s2[SadBits], b_s1[SadBits]};
-    b_r_q    <= b_s1[SadBits-1:0];
-    b_mx_q   <= a_mx_q;
-  end
-
-  // ---- C: the uniqueness compare, quotient bit 0, the low bits --------------------------
-  logic [ThrW-1:0] thresh;
-  logic [NumDisp-1:0] urej;
-  logic [SadBits:0] c_s0;
-  logic c_low;
-  assign thresh = ThrW'(b_m_q) + b_q100_q;
-  for (genvar d = 0; d < NumDisp; d++) begin : gen_urej
-    assign urej[d] = b_far_q[d] &&
-                     ThrW'(sads_q[(TreeStages+1)*SadW + d*SadBits +: SadBits]) <= thresh;
-  end
-  assign c_s0  = div_step(b_r_q, b_mx_q);
-  // q mod 16 != 0  <=>  16 r >= mx, r the remainder after the three steps.
-  assign c_low = {c_s0[SadBits-1:0], 4'b0} >= {4'b0, b_mx_q};
-
-  logic [NumDisp-1:0] c_urej_q;
+  logic [ThrW-1:0] c_q100_q;
+  logic [SadBits-1:0] c_m_q, c_r_q, c_mx_q;
+  logic [SadBits+4:0] c_mx17_q;
   logic [DispW-1:0] c_d_q, c_dm1_q;
-  logic [2:0] c_qhi_q;
-  logic c_inv_q, c_fit_q, c_neg_q, c_low_q;
+  logic [NumDisp-1:0] c_far_q;
+  logic c_qhi_q, c_inv_q, c_fit_q, c_neg_q;
   always_ff @(posedge clk_i) begin
-    c_urej_q <= urej;
+    c_q100_q <= ThrW'((SumW'(b_lo_q) + (SumW'(b_hi_q) << KSplit)) >> KShift);
+    c_m_q    <= b_m_q;
     c_inv_q  <= b_inv_q;
     c_d_q    <= b_d_q;
-    c_dm1_q  <= b_dm1_q;
+    c_dm1_q  <= b_d_q - 1'b1;
     c_fit_q  <= b_fit_q;
+    c_far_q  <= b_far_q;
     c_neg_q  <= b_neg_q;
-    c_qhi_q  <= {b_qhi_q, c_s0[SadBits]};
-    c_low_q  <= c_low;
+    c_qhi_q  <= c_s2[SadBits];
+    c_r_q    <= c_s2[SadBits-1:0];
+    c_mx_q   <= b_mx_q;
+    c_mx17_q <= (SadBits + 5)'(b_mx_q) + {b_mx_q, 4'b0};
   end
 
-  // ---- D: the value ---------------------------------------------------------------------
+  // ---- D: thresh = m + floor(m U / 100), quotient bit 1 ---------------------------------
+  logic [SadBits:0] d_s1;
+  assign d_s1 = div_step(c_r_q, c_mx_q);
+
+  // The SADs leave their shift register into plain registers here (an SRL's clock-to-out is
+  // slow), those of candidates the uniqueness test skips as all ones, above every thresh.
+  logic [NumDisp*ThrW-1:0] d_sad_q;
+  for (genvar d = 0; d < NumDisp; d++) begin : gen_dsad
+    always_ff @(posedge clk_i) begin
+      d_sad_q[d*ThrW +: ThrW] <= c_far_q[d] ? ThrW'(sads_q[(TreeStages+2)*SadW + d*SadBits +:
+                                                           SadBits])
+                                            : '1;
+    end
+  end
+
+  logic [ThrW-1:0] d_thresh_q;
+  logic [SadBits-1:0] d_r_q, d_mx_q;
+  logic [SadBits+4:0] d_mx17_q;
+  logic [DispW-1:0] d_d_q, d_dm1_q;
+  logic [1:0] d_qhi_q;
+  logic d_inv_q, d_fit_q, d_neg_q;
+  always_ff @(posedge clk_i) begin
+    d_thresh_q <= ThrW'(c_m_q) + c_q100_q;
+    d_inv_q    <= c_inv_q;
+    d_d_q      <= c_d_q;
+    d_dm1_q    <= c_dm1_q;
+    d_fit_q    <= c_fit_q;
+    d_neg_q    <= c_neg_q;
+    d_qhi_q    <= {c_qhi_q, d_s1[SadBits]};
+    d_r_q      <= d_s1[SadBits-1:0];
+    d_mx_q     <= c_mx_q;
+    d_mx17_q   <= c_mx17_q;
+  end
+
+  // ---- E: thresh against every candidate; quotient bit 0 and the low bits ----------------
+  // With t = 2 r: bit 0 is t >= mx and the remainder r0 = t - bit0 mx; q mod 16 != 0 is
+  // 16 r0 >= mx, that is 32 r >= 17 mx when bit 0 is set and 32 r >= mx otherwise: three
+  // compares side by side instead of a subtraction and a compare behind it.
+  logic [NumDisp-1:0] urej, e_urej_q;
+  for (genvar d = 0; d < NumDisp; d++) begin : gen_urej
+    assign urej[d] = d_sad_q[d*ThrW +: ThrW] <= d_thresh_q;
+  end
+
+  logic [DispW-1:0] e_d_q, e_dm1_q;
+  logic [1:0] e_qhi_q;
+  logic e_inv_q, e_fit_q, e_neg_q, e_q0_q, e_ge17_q, e_ge1_q;
+  always_ff @(posedge clk_i) begin
+    e_urej_q <= urej;
+    e_inv_q  <= d_inv_q;
+    e_d_q    <= d_d_q;
+    e_dm1_q  <= d_dm1_q;
+    e_fit_q  <= d_fit_q;
+    e_neg_q  <= d_neg_q;
+    e_qhi_q  <= d_qhi_q;
+    e_q0_q   <= {d_r_q, 1'b0} >= {1'b0, d_mx_q};
+    e_ge17_q <= {d_r_q, 5'b0} >= d_mx17_q;
+    e_ge1_q  <= {d_r_q, 5'b0} >= (SadBits + 5)'(d_mx_q);
+  end
+
+  // ---- F: the value, or the invalid code on any rejection -------------------------------
+  logic [2:0] qhi;
   logic [4:0] adj;  // (frac + 15) >>> 4, -7 .. 8
   logic [15:0] value, disp_q;
-  assign adj   = c_neg_q ? -{2'b0, c_qhi_q} : {2'b0, c_qhi_q} + 5'(c_low_q);
-  assign value = !c_fit_q ? {c_d_q, 4'b0} : {adj[4] ? c_dm1_q : c_d_q, adj[3:0]};
+  assign qhi   = {e_qhi_q, e_q0_q};
+  assign adj   = e_neg_q ? -{2'b0, qhi} : {2'b0, qhi} + {4'b0, e_q0_q ? e_ge17_q : e_ge1_q};
+  assign value = !e_fit_q ? {e_d_q, 4'b0} : {adj[4] ? e_dm1_q : e_d_q, adj[3:0]};
   always_ff @(posedge clk_i) begin
-    disp_q <= (c_inv_q || |c_urej_q) ? invalid_q : value;
+    disp_q <= (e_inv_q || |e_urej_q) ? invalid_q : value;
   end
   assign disp_o = disp_q;
 endmodule

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Disparity prefilter: streaming x-Sobel with cap (cv::StereoBM PREFILTER_XSOBEL), Latency 3.
+// Disparity prefilter: streaming x-Sobel with cap (cv::StereoBM PREFILTER_XSOBEL), Latency 4.
 `default_nettype none
 
 // P(x, v) = clamp(g(x, v-1) + 2 g(x, v) + g(x, v+1), -cap, cap) + cap, g = I(x+1) - I(x-1);
@@ -22,8 +22,8 @@
 // that write (rows of one word are written whole from the input instead).
 //
 // Reader pipeline (free running; rd_i issues): s0 RAM read of word out_x in all slots, slot
-// selects and cap lanes registered -> s1 select up/cur/down rows, up + down -> s2 + 2 cur,
-// clamp, + cap -> out.
+// selects and cap lanes registered -> s1 the RAMs' output registers -> s2 select up/cur/down
+// rows, up + down -> s3 + 2 cur, clamp, + cap -> out.
 module scw_disparity_prefilter #(
   parameter int unsigned Ppc        /*verilator public*/ = 1,
   parameter int unsigned MaxWidthPx /*verilator public*/ = 64,
@@ -52,7 +52,7 @@ module scw_disparity_prefilter #(
   // Cycles from rd_i to out_valid_o; scw::hls::disparity::XSobel::kReadLatency is checked
   // against it at compile time.
   /* verilator lint_off UNUSEDPARAM */
-  localparam int unsigned Latency /*verilator public*/ = 3;
+  localparam int unsigned Latency /*verilator public*/ = 4;
   /* verilator lint_on UNUSEDPARAM */
   localparam int unsigned Slots  = 5;
   localparam int unsigned SlotW  = 3;
@@ -229,10 +229,11 @@ module scw_disparity_prefilter #(
     );
   end
 
-  // ---- s1: RAM words in; pick the rows; up + down ------------------------------------------
-  logic s1_valid_q, s2_valid_q, out_valid_q;
-  logic [Slots-1:0] s1_up_q, s1_cur_q, s1_dn_q;
-  logic [Ppc-1:0] s1_cap_q, s2_cap_q;
+  // ---- s1: the RAMs' output registers; s2: pick the rows, up + down -------------------------
+  logic s1_valid_q, s15_valid_q, s2_valid_q, out_valid_q;
+  logic [Slots*WordW-1:0] rd_words_q;
+  logic [Slots-1:0] s1_up_q, s1_cur_q, s1_dn_q, s15_up_q, s15_cur_q, s15_dn_q;
+  logic [Ppc-1:0] s1_cap_q, s15_cap_q, s2_cap_q;
   logic [WordW-1:0] g_up, g_cur, g_dn;
   logic [Ppc*UdW-1:0] ud;
   logic [Ppc*UdW-1:0] s2_ud_q;
@@ -242,11 +243,13 @@ module scw_disparity_prefilter #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       s1_valid_q  <= 1'b0;
+      s15_valid_q <= 1'b0;
       s2_valid_q  <= 1'b0;
       out_valid_q <= 1'b0;
     end else begin
       s1_valid_q  <= rd_i;
-      s2_valid_q  <= s1_valid_q;
+      s15_valid_q <= s1_valid_q;
+      s2_valid_q  <= s15_valid_q;
       out_valid_q <= s2_valid_q;
     end
   end
@@ -257,9 +260,9 @@ module scw_disparity_prefilter #(
     g_cur = '0;
     g_dn  = '0;
     for (int s = 0; s < Slots; s++) begin
-      g_up  = g_up | (rd_words[s*WordW +: WordW] & {WordW{s1_up_q[s]}});
-      g_cur = g_cur | (rd_words[s*WordW +: WordW] & {WordW{s1_cur_q[s]}});
-      g_dn  = g_dn | (rd_words[s*WordW +: WordW] & {WordW{s1_dn_q[s]}});
+      g_up  = g_up | (rd_words_q[s*WordW +: WordW] & {WordW{s15_up_q[s]}});
+      g_cur = g_cur | (rd_words_q[s*WordW +: WordW] & {WordW{s15_cur_q[s]}});
+      g_dn  = g_dn | (rd_words_q[s*WordW +: WordW] & {WordW{s15_dn_q[s]}});
     end
   end
 
@@ -275,13 +278,18 @@ module scw_disparity_prefilter #(
     s1_cur_q   <= cur_oh;
     s1_dn_q    <= dn_oh;
     s1_cap_q   <= cap_lanes;
+    rd_words_q <= rd_words;
+    s15_up_q   <= s1_up_q;
+    s15_cur_q  <= s1_cur_q;
+    s15_dn_q   <= s1_dn_q;
+    s15_cap_q  <= s1_cap_q;
     s2_ud_q    <= ud;
     s2_cur_q   <= g_cur;
-    s2_cap_q   <= s1_cap_q;
+    s2_cap_q   <= s15_cap_q;
     out_data_q <= out_pix;
   end
 
-  // ---- s2: + 2 cur, clamp to [-cap, cap], + cap ------------------------------------------
+  // ---- s3: + 2 cur, clamp to [-cap, cap], + cap ------------------------------------------
   for (genvar i = 0; i < Ppc; i++) begin : gen_out
     logic signed [UdW-1:0] a;
     logic signed [GW-1:0] b;

@@ -12,12 +12,19 @@
 //
 //   c0  write the row into the left/right line buffers (N + 1 rows) and a one-row right delay;
 //       read the leaving row's left word, the right words dmin pixels back
-//   c1  align the right pixels by dmin % Ppc, shift them into the candidate window,
-//       |L - R| for the new and the leaving row, read the column sums
-//   c2  C = C + new - leaving (the first row restarts it; right pixels left of 0 give 0)
-//   c3  write C back, window sums along the row -> output registers
-// The column-sum RAM is read in c1 and written in c3 of the same beat, so the next row's read
-// of that column must come at least 3 beats later: frames are at least 3 beats wide.
+//   c1  the line buffers' output registers
+//   c2  align the right pixels by dmin % Ppc, shift them into the candidate window; read the
+//       column sums
+//   c3  |L - R| for the new and the leaving row; the column-sum RAM's output register
+//   c4  C = C + new - leaving (the first row restarts it; right pixels left of 0 give 0),
+//       written back
+//   c5  D = C(x) - C(x - N) per lane (0 for x < N)
+//   p1 .. pK  prefix sums of D across the beat's lanes, K = log2(Ppc) (a Sklansky tree)
+//   s   S(lane i) = S(last lane of the previous beat, 0 at a row's start) + prefix(i) -> out
+// Every block-RAM read has its output register and every add its own clock (the sums are
+// modulo 2^SadBits, exact because every true window sum fits). The column-sum RAM is read in
+// c2 and written in c4 of the same beat, so the next row's read of that column must come at
+// least 3 beats later: frames are at least 3 beats wide.
 module scw_disparity_sums #(
   parameter int unsigned Ppc        /*verilator public*/ = 1,
   parameter int unsigned MaxWidthPx /*verilator public*/ = 32,
@@ -56,7 +63,8 @@ module scw_disparity_sums #(
   output logic [TagBits-1:0]              tag_o
 );
   /* verilator lint_off UNUSEDPARAM */
-  localparam int unsigned Latency /*verilator public*/ = 4;
+  localparam int unsigned PreStages = (Ppc > 1) ? $clog2(Ppc) : 0;
+  localparam int unsigned Latency /*verilator public*/ = 7 + PreStages;
   /* verilator lint_on UNUSEDPARAM */
   localparam int unsigned LbDepth = Slots * Cols;
   localparam int unsigned LbAW    = $clog2(LbDepth);
@@ -112,51 +120,82 @@ module scw_disparity_sums #(
     .rd_en_i(valid_i), .rd_addr_i(col_back), .rd_data_o(rdel_rd)
   );
 
-  logic v1_q, v2_q, v3_q, v4_q;
-  logic [ColW-1:0] col1_q, col2_q, col3_q;
+  // ---- stage pipeline of valid, position and tag ------------------------------------------
+  // v_q[k]: a beat in stage k (c1 = 1 .. the output = Latency).
+  logic [Latency:1] v_q;
+  logic [ColW-1:0] col1_q, col2_q, col3_q, col4_q, col5_q;
   logic [HW-1:0] row1_q, row2_q;
-  logic [BeatW-1:0] left1_q, right1_q;
-  logic [TagBits-1:0] tag1_q, tag2_q, tag3_q, tag4_q;
+  logic [BeatW-1:0] left1_q, left2_q, left3_q, right1_q, right2_q;
+  logic [Latency*TagBits-1:0] tag_q;  // stage k at [(k-1)*TagBits +: TagBits]
+  // first_q[k]: the beat in stage k starts its row.
+  logic [Latency-1:6] first_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      v1_q <= 1'b0;
-      v2_q <= 1'b0;
-      v3_q <= 1'b0;
-      v4_q <= 1'b0;
-    end else begin
-      v1_q <= valid_i;
-      v2_q <= v1_q;
-      v3_q <= v2_q;
-      v4_q <= v3_q;
+    if (!rst_ni) v_q <= '0;
+    else v_q <= {v_q[Latency-1:1], valid_i};
+  end
+
+  // Each stage's registers load with that stage's valid: the enables differ from stage to
+  // stage, so no run of them becomes a shift register (an SRL's clock-to-out is slow).
+  always_ff @(posedge clk_i) begin
+    if (valid_i) begin
+      col1_q   <= col_i;
+      row1_q   <= row_i;
+      left1_q  <= left_i;
+      right1_q <= right_i;
+    end
+    if (v_q[1]) begin
+      col2_q   <= col1_q;
+      row2_q   <= row1_q;
+      left2_q  <= left1_q;
+      right2_q <= right1_q;
+    end
+    if (v_q[2]) begin
+      col3_q  <= col2_q;
+      left3_q <= left2_q;
+    end
+    if (v_q[3]) col4_q <= col3_q;
+    if (v_q[4]) col5_q <= col4_q;
+  end
+  always_ff @(posedge clk_i) begin
+    if (valid_i) tag_q[TagBits-1:0] <= tag_i;
+  end
+  for (genvar k = 1; k < Latency; k++) begin : gen_tag
+    always_ff @(posedge clk_i) begin
+      if (v_q[k]) tag_q[k*TagBits +: TagBits] <= tag_q[(k-1)*TagBits +: TagBits];
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (v_q[5]) first_q[6] <= col5_q == '0;
+  end
+  for (genvar k = 7; k < Latency; k++) begin : gen_first
+    always_ff @(posedge clk_i) begin
+      if (v_q[k-1]) first_q[k] <= first_q[k-1];
     end
   end
 
+  // ---- c1: line-buffer output registers ---------------------------------------------------
+  // x0 - dmin for c2's masks: candidate d of lane i reads column x0 + i - dmin - d.
+  logic [BeatW-1:0] lold_q, rold_q, rdel_q;
+  logic signed [XW-1:0] xr2_q;
   always_ff @(posedge clk_i) begin
-    col1_q   <= col_i;
-    row1_q   <= row_i;
-    left1_q  <= left_i;
-    right1_q <= right_i;
-    tag1_q   <= tag_i;
-    col2_q   <= col1_q;
-    row2_q   <= row1_q;
-    tag2_q   <= tag1_q;
-    col3_q   <= col2_q;
-    tag3_q   <= tag2_q;
-    tag4_q   <= tag3_q;
+    xr2_q  <= signed'(XW'(col1_q) * XW'(Ppc)) - dmin_q;
+    lold_q <= lold_rd;
+    rold_q <= rold_rd;
+    rdel_q <= rdel_rd;
   end
 
-  // ---- c1: candidate windows and absolute differences -------------------------------------
+  // ---- c2: candidate windows ---------------------------------------------------------------
   logic [BeatW-1:0] rnew_w, rnew_prev_q, rold_prev_q;
   logic [BeatW-1:0] rnew_al, rold_al;  // R(x0 + i - dmin) of the new and the leaving row
   logic [HistPx*PixW-1:0] hnew_q, hold_q;
   logic [WinPx*PixW-1:0] wnew, wold;  // [m]: R(x0 + Ppc - 1 - dmin - m)
-  assign rnew_w = (back_words_q == '0) ? right1_q : rdel_rd;
+  assign rnew_w = (back_words_q == '0) ? right2_q : rdel_q;
 
   for (genvar i = 0; i < Ppc; i++) begin : gen_align
     logic [2*BeatW-1:0] pair_new, pair_old;  // {this word, previous word}
     assign pair_new = {rnew_w, rnew_prev_q};
-    assign pair_old = {rold_rd, rold_prev_q};
+    assign pair_old = {rold_q, rold_prev_q};
     assign rnew_al[i*PixW +: PixW] = pair_new[(Ppc + i - 32'(shift_q))*PixW +: PixW];
     assign rold_al[i*PixW +: PixW] = pair_old[(Ppc + i - 32'(shift_q))*PixW +: PixW];
     assign wnew[(Ppc - 1 - i)*PixW +: PixW] = rnew_al[i*PixW +: PixW];
@@ -166,77 +205,99 @@ module scw_disparity_sums #(
   assign wold[WinPx*PixW-1:Ppc*PixW] = hold_q;
 
   always_ff @(posedge clk_i) begin
-    if (v1_q) begin
+    if (v_q[2]) begin
       rnew_prev_q <= rnew_w;
-      rold_prev_q <= rold_rd;
+      rold_prev_q <= rold_q;
       hnew_q      <= wnew[HistPx*PixW-1:0];
       hold_q      <= wold[HistPx*PixW-1:0];
     end
   end
 
+  logic [WinPx*PixW-1:0] wnew_q, wold_q;
+  logic [BeatW-1:0] lold3_q;
+  logic signed [XW-1:0] xr3_q;
+  logic first_row, full, first3_q, full3_q;
+  assign first_row = row2_q == '0;
+  assign full      = row2_q >= HW'(Window);  // the leaving row y - N exists
+  always_ff @(posedge clk_i) begin
+    wnew_q   <= wnew;
+    wold_q   <= wold;
+    lold3_q  <= lold_q;
+    xr3_q    <= xr2_q;
+    first3_q <= first_row;
+    full3_q  <= full;
+  end
+
+  // ---- c3: absolute differences ------------------------------------------------------------
+
+  // The differences leave c2 already gated, so that c3 is a plain three-input add: a right
+  // pixel left of column 0 gives C = 0 (everything gated), the first row restarts C (no kept
+  // sum), the leaving row exists only from row N on.
   logic [Ppc*NumDisp*PixW-1:0] dnew_d, dold_d, dnew_q, dold_q;
-  logic [Ppc*NumDisp-1:0] mask_d, mask_q;  // the right pixel is left of column 0
+  logic [Ppc*NumDisp-1:0] keep_d, keep_q;  // add the kept column sum
   logic [Ppc*PixW-1:0] tnew_d, told_d, tnew_q, told_q;
-  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c1
+  logic keep_t_q;
+  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c3
     logic [PixW-1:0] l_new, l_old;
-    logic signed [XW-1:0] first_d;  // x - dmin: candidate d reads column x - dmin - d
-    assign l_new   = left1_q[i*PixW +: PixW];
-    assign l_old   = lold_rd[i*PixW +: PixW];
-    assign first_d = signed'(XW'(col1_q) * XW'(Ppc) + XW'(i)) - dmin_q;
+    assign l_new   = left3_q[i*PixW +: PixW];
+    assign l_old   = lold3_q[i*PixW +: PixW];
     assign tnew_d[i*PixW +: PixW] = (l_new > PixW'(cap_q)) ? l_new - PixW'(cap_q)
                                                            : PixW'(cap_q) - l_new;
-    assign told_d[i*PixW +: PixW] = (l_old > PixW'(cap_q)) ? l_old - PixW'(cap_q)
+    assign told_d[i*PixW +: PixW] = !full3_q ? '0
+                                  : (l_old > PixW'(cap_q)) ? l_old - PixW'(cap_q)
                                                            : PixW'(cap_q) - l_old;
     for (genvar d = 0; d < NumDisp; d++) begin : gen_cand
       logic [PixW-1:0] r_new, r_old;
-      assign r_new = wnew[(Ppc - 1 - i + d)*PixW +: PixW];
-      assign r_old = wold[(Ppc - 1 - i + d)*PixW +: PixW];
-      assign dnew_d[(i*NumDisp + d)*PixW +: PixW] = (l_new > r_new) ? l_new - r_new
+      assign r_new = wnew_q[(Ppc - 1 - i + d)*PixW +: PixW];
+      assign r_old = wold_q[(Ppc - 1 - i + d)*PixW +: PixW];
+      logic mask;  // the right pixel is left of column 0
+      assign mask = xr3_q < XW'(d - i);  // x0 + i - dmin < d
+      assign dnew_d[(i*NumDisp + d)*PixW +: PixW] = mask ? '0
+                                                  : (l_new > r_new) ? l_new - r_new
                                                                     : r_new - l_new;
-      assign dold_d[(i*NumDisp + d)*PixW +: PixW] = (l_old > r_old) ? l_old - r_old
+      assign dold_d[(i*NumDisp + d)*PixW +: PixW] = (mask || !full3_q) ? '0
+                                                  : (l_old > r_old) ? l_old - r_old
                                                                     : r_old - l_old;
-      assign mask_d[i*NumDisp + d] = first_d < XW'(d);
+      assign keep_d[i*NumDisp + d] = !mask && !first3_q;
     end
   end
 
   always_ff @(posedge clk_i) begin
     dnew_q <= dnew_d;
     dold_q <= dold_d;
-    mask_q <= mask_d;
+    keep_q <= keep_d;
     tnew_q <= tnew_d;
     told_q <= told_d;
+    keep_t_q <= !first3_q;
   end
 
-  // ---- c1 -> c2: column-sum RAMs (read in c1, written back in c3) ---------------------------
-  logic [CW-1:0] csum_rd, csum_d, csum_q;
-  logic [Ppc*ColBits-1:0] tsum_rd, tsum_d, tsum_q;
+  // ---- column-sum RAMs: read in c2 (output register in c3), written in c4 -----------------
+  logic [CW-1:0] csum_rd, csum_rd_q, csum_d, csum_q;
+  logic [Ppc*ColBits-1:0] tsum_rd, tsum_rd_q, tsum_d, tsum_q;
   scw_ram_sdp #(.Width(CW), .Depth(Cols)) u_col_sums (
-    .clk_i, .wr_en_i(v3_q), .wr_addr_i(col3_q), .wr_data_i(csum_q),
-    .rd_en_i(v1_q), .rd_addr_i(col1_q), .rd_data_o(csum_rd)
+    .clk_i, .wr_en_i(v_q[4]), .wr_addr_i(col4_q), .wr_data_i(csum_d),
+    .rd_en_i(v_q[2]), .rd_addr_i(col2_q), .rd_data_o(csum_rd)
   );
   scw_ram_sdp #(.Width(Ppc * ColBits), .Depth(Cols)) u_texture_sums (
-    .clk_i, .wr_en_i(v3_q), .wr_addr_i(col3_q), .wr_data_i(tsum_q),
-    .rd_en_i(v1_q), .rd_addr_i(col1_q), .rd_data_o(tsum_rd)
+    .clk_i, .wr_en_i(v_q[4]), .wr_addr_i(col4_q), .wr_data_i(tsum_d),
+    .rd_en_i(v_q[2]), .rd_addr_i(col2_q), .rd_data_o(tsum_rd)
   );
+  always_ff @(posedge clk_i) begin
+    csum_rd_q <= csum_rd;
+    tsum_rd_q <= tsum_rd;
+  end
 
-  // ---- c2: column sums ---------------------------------------------------------------------
-  logic first_row, full;
-  assign first_row = row2_q == '0;
-  assign full      = row2_q >= HW'(Window);  // the leaving row y - N exists
-  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c2
+  // ---- c4: column sums ---------------------------------------------------------------------
+  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c4
     for (genvar d = 0; d < NumDisp; d++) begin : gen_cand
       localparam int unsigned J = i * NumDisp + d;
-      logic [ColBits-1:0] kept;
-      assign kept = first_row ? '0 : csum_rd[J*ColBits +: ColBits];
       assign csum_d[J*ColBits +: ColBits] =
-          mask_q[J] ? '0
-                    : kept + ColBits'(dnew_q[J*PixW +: PixW])
-                      - (full ? ColBits'(dold_q[J*PixW +: PixW]) : '0);
+          (keep_q[J] ? csum_rd_q[J*ColBits +: ColBits] : '0) +
+          ColBits'(dnew_q[J*PixW +: PixW]) - ColBits'(dold_q[J*PixW +: PixW]);
     end
-    logic [ColBits-1:0] tkept;
-    assign tkept = first_row ? '0 : tsum_rd[i*ColBits +: ColBits];
-    assign tsum_d[i*ColBits +: ColBits] = tkept + ColBits'(tnew_q[i*PixW +: PixW])
-                                          - (full ? ColBits'(told_q[i*PixW +: PixW]) : '0);
+    assign tsum_d[i*ColBits +: ColBits] = (keep_t_q ? tsum_rd_q[i*ColBits +: ColBits] : '0) +
+                                          ColBits'(tnew_q[i*PixW +: PixW]) -
+                                          ColBits'(told_q[i*PixW +: PixW]);
   end
 
   always_ff @(posedge clk_i) begin
@@ -244,75 +305,106 @@ module scw_disparity_sums #(
     tsum_q <= tsum_d;
   end
 
-  // ---- c3: window sums along the row -------------------------------------------------------
+  // ---- c5: D = C(x) - C(x - N) -------------------------------------------------------------
   // back_q holds the column sums of the last Back beats, newest first: C(x - N) of lane i is
-  // lane (i - N) mod Ppc of the beat ceil((N - i) / Ppc) back. Lanes before column N leave 0.
-  // Whole beats are shifted (SRL-friendly); only the lanes that leave a window are tapped.
+  // lane (i - N) mod Ppc of the beat ceil((N - i) / Ppc) back. Whole beats are shifted with
+  // enable and without reset (SRLs); gone_q takes the tap a beat in c5 needs one clock ahead,
+  // from the shift register as it will be after the edge, so the subtraction starts at a
+  // plain register rather than at an SRL's slow output. Lanes before column N subtract 0.
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [Back*CW-1:0] back_q;
-  logic [Back*Ppc*ColBits-1:0] tback_q;
+  logic [Back*CW-1:0] back_q, back_next;
+  logic [Back*Ppc*ColBits-1:0] tback_q, tback_next;
   /* verilator lint_on UNUSEDSIGNAL */
   if (Back == 1) begin : gen_back1
-    always_ff @(posedge clk_i) begin
-      if (v3_q) begin
-        back_q  <= csum_q;
-        tback_q <= tsum_q;
-      end
-    end
+    assign back_next  = v_q[5] ? csum_q : back_q;
+    assign tback_next = v_q[5] ? tsum_q : tback_q;
   end else begin : gen_back
-    always_ff @(posedge clk_i) begin
-      if (v3_q) begin
-        back_q  <= {back_q[(Back-1)*CW-1:0], csum_q};
-        tback_q <= {tback_q[(Back-1)*Ppc*ColBits-1:0], tsum_q};
-      end
+    assign back_next  = v_q[5] ? {back_q[(Back-1)*CW-1:0], csum_q} : back_q;
+    assign tback_next = v_q[5] ? {tback_q[(Back-1)*Ppc*ColBits-1:0], tsum_q} : tback_q;
+  end
+  always_ff @(posedge clk_i) begin
+    if (v_q[5]) begin
+      back_q  <= back_next;
+      tback_q <= tback_next;
     end
   end
 
-  logic [NumDisp*SadBits-1:0] run_q;  // S_d of the last pixel of the previous beat
-  logic [SadBits-1:0] trun_q;
-  // Lane i continues lane i - 1's sums: split_var keeps Verilator from seeing a loop.
-  logic [Ppc*NumDisp*SadBits-1:0] sad_d /*verilator split_var*/;
-  logic [Ppc*SadBits-1:0] tex_d /*verilator split_var*/;
-  logic [WW-1:0] x3;
-  assign x3 = WW'(col3_q) * WW'(Ppc);
-
-  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c3
+  // Lane i, candidate k (k = NumDisp: the texture sum) at [(i * K + k) * SadBits +: SadBits].
+  localparam int unsigned K  = NumDisp + 1;
+  localparam int unsigned KW = Ppc * K * SadBits;
+  logic [Ppc*K*ColBits-1:0] gone_d, gone_q;
+  logic [KW-1:0] delta_d, delta_q;
+  logic [WW-1:0] x5;
+  assign x5 = WW'(col5_q) * WW'(Ppc);
+  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c5
     localparam int unsigned BackBeats = (Window - i + Ppc - 1) / Ppc;
     localparam int unsigned BackLane  = BackBeats * Ppc + i - Window;
-    logic leaves;  // x >= N
-    assign leaves = (x3 + WW'(i)) >= WW'(Window);
-    for (genvar d = 0; d < NumDisp; d++) begin : gen_cand
-      localparam int unsigned J  = i * NumDisp + d;
-      localparam int unsigned JB = (BackBeats - 1) * CW + (BackLane * NumDisp + d) * ColBits;
-      logic [SadBits-1:0] prev, gone;
-      if (i == 0) begin : gen_first
-        assign prev = (col3_q == '0) ? '0 : run_q[d*SadBits +: SadBits];
-      end else begin : gen_next
-        assign prev = sad_d[((i - 1)*NumDisp + d)*SadBits +: SadBits];
-      end
-      assign gone = leaves ? SadBits'(back_q[JB +: ColBits]) : '0;
-      assign sad_d[J*SadBits +: SadBits] = prev + SadBits'(csum_q[J*ColBits +: ColBits]) - gone;
-    end
     localparam int unsigned TB = (BackBeats - 1) * Ppc * ColBits + BackLane * ColBits;
-    logic [SadBits-1:0] tprev, tgone;
-    if (i == 0) begin : gen_tfirst
-      assign tprev = (col3_q == '0) ? '0 : trun_q;
-    end else begin : gen_tnext
-      assign tprev = tex_d[(i - 1)*SadBits +: SadBits];
+    logic leaves;  // x >= N
+    assign leaves = (x5 + WW'(i)) >= WW'(Window);
+    for (genvar d = 0; d < NumDisp; d++) begin : gen_cand
+      localparam int unsigned JB = (BackBeats - 1) * CW + (BackLane * NumDisp + d) * ColBits;
+      assign gone_d[(i*K + d)*ColBits +: ColBits] = back_next[JB +: ColBits];
     end
-    assign tgone = leaves ? SadBits'(tback_q[TB +: ColBits]) : '0;
-    assign tex_d[i*SadBits +: SadBits] = tprev + SadBits'(tsum_q[i*ColBits +: ColBits]) - tgone;
+    assign gone_d[(i*K + NumDisp)*ColBits +: ColBits] = tback_next[TB +: ColBits];
+    for (genvar k = 0; k < K; k++) begin : gen_delta
+      logic [ColBits-1:0] c;
+      if (k < NumDisp) begin : gen_c
+        assign c = csum_q[(i*NumDisp + k)*ColBits +: ColBits];
+      end else begin : gen_t
+        assign c = tsum_q[i*ColBits +: ColBits];
+      end
+      assign delta_d[(i*K + k)*SadBits +: SadBits] =
+          SadBits'(c) - (leaves ? SadBits'(gone_q[(i*K + k)*ColBits +: ColBits]) : '0);
+    end
   end
-
   always_ff @(posedge clk_i) begin
-    if (v3_q) begin
-      run_q  <= sad_d[(Ppc-1)*NumDisp*SadBits +: NumDisp*SadBits];
-      trun_q <= tex_d[(Ppc-1)*SadBits +: SadBits];
-    end
-    sad_o     <= sad_d;
-    texture_o <= tex_d;
+    gone_q  <= gone_d;
+    delta_q <= delta_d;
   end
 
-  assign valid_o = v4_q;
-  assign tag_o   = tag4_q;
+  // ---- p1 .. pK: prefix sums across the lanes ----------------------------------------------
+  // Level l: a lane with bit l set adds the last lane of the block of 2^l lanes before it.
+  logic [(PreStages+1)*KW-1:0] pre;  // level l at [l*KW +: KW]
+  assign pre[KW-1:0] = delta_q;
+  for (genvar l = 0; l < PreStages; l++) begin : gen_pre
+    logic [KW-1:0] nxt, nxt_q;
+    for (genvar i = 0; i < Ppc; i++) begin : gen_lane
+      localparam int unsigned From = ((i >> l) << l) - 1;
+      for (genvar k = 0; k < K; k++) begin : gen_k
+        if (((i >> l) & 1) != 0) begin : gen_add
+          assign nxt[(i*K + k)*SadBits +: SadBits] = pre[l*KW + (i*K + k)*SadBits +: SadBits] +
+                                                     pre[l*KW + (From*K + k)*SadBits +: SadBits];
+        end else begin : gen_keep
+          assign nxt[(i*K + k)*SadBits +: SadBits] = pre[l*KW + (i*K + k)*SadBits +: SadBits];
+        end
+      end
+    end
+    always_ff @(posedge clk_i) nxt_q <= nxt;
+    assign pre[(l+1)*KW +: KW] = nxt_q;
+  end
+
+  // ---- s: window sums ----------------------------------------------------------------------
+  logic [K*SadBits-1:0] run_q;  // S of the previous beat's last lane
+  logic [KW-1:0] s_d, s_q;
+  logic first;
+  assign first = first_q[Latency-1];
+  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_s
+    for (genvar k = 0; k < K; k++) begin : gen_k
+      assign s_d[(i*K + k)*SadBits +: SadBits] =
+          (first ? '0 : run_q[k*SadBits +: SadBits]) +
+          pre[PreStages*KW + (i*K + k)*SadBits +: SadBits];
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (v_q[Latency-1]) run_q <= s_d[(Ppc-1)*K*SadBits +: K*SadBits];
+    s_q <= s_d;
+  end
+
+  for (genvar i = 0; i < Ppc; i++) begin : gen_out
+    assign sad_o[i*NumDisp*SadBits +: NumDisp*SadBits] = s_q[i*K*SadBits +: NumDisp*SadBits];
+    assign texture_o[i*SadBits +: SadBits] = s_q[(i*K + NumDisp)*SadBits +: SadBits];
+  end
+  assign valid_o = v_q[Latency];
+  assign tag_o   = tag_q[(Latency-1)*TagBits +: TagBits];
 endmodule

@@ -438,22 +438,24 @@ void check_decide(const char* name, int cycles_per_run, std::uint64_t seed) {
     CHECK(c >= 20);
 }
 
-/// floor(p / 100) == ((p >> 2) * RecipMul) >> RecipShift for every product p = m * U the unit
-/// can see (m < 2^SadBits, U <= 255), with the constants it chose at elaboration.
+/// floor(m U / 100) == (m K) >> KShift with K = ceil(U 2^KShift / 100), the unit's ROM word,
+/// for every m < 2^SadBits and every U <= 255, with the shift it chose at elaboration.
 template <typename VMod, typename P>
 void check_reciprocal() {
-  constexpr std::uint64_t pmax = static_cast<std::uint64_t>(P::kMaxSad) * 255;
-  constexpr std::uint64_t mul = VMod::RecipMul;
-  constexpr unsigned shift = VMod::RecipShift;
+  constexpr std::uint64_t mmax = static_cast<std::uint64_t>(P::kMaxSad);
+  constexpr unsigned shift = VMod::KShift;
   std::uint64_t wrong = 0;
-  for (std::uint64_t p = 0; p <= pmax; ++p) wrong += (p / 100 != ((p >> 2) * mul) >> shift);
-  INFO("RecipMul " << mul << " RecipShift " << shift << " up to " << pmax);
+  for (std::uint64_t u = 0; u <= 255; ++u) {
+    const std::uint64_t k = ((u << shift) + 99) / 100;
+    for (std::uint64_t m = 0; m <= mmax; ++m) wrong += (m * u / 100 != (m * k) >> shift);
+  }
+  INFO("KShift " << shift << ", m up to " << mmax);
   CHECK(wrong == 0);
 }
 
 }  // namespace
 
-TEST_CASE("decide's reciprocal division by 100 is exact for every m * U", "[disparity][rtl]") {
+TEST_CASE("decide's reciprocal division by 100 is exact for every m and U", "[disparity][rtl]") {
   check_reciprocal<Vdecide_n8_scw_disparity_decide, N8>();
   check_reciprocal<Vdecide_n45_scw_disparity_decide, N45>();
 }
