@@ -12,6 +12,15 @@
 
 namespace scw::sim {
 
+/// The RTL's descriptor field widths (public localparams) are hls::labelling::desc_widths'.
+template <typename VM>
+constexpr bool labelling_widths_match(const hls::labelling::DescWidths& w) {
+  return VM::AreaW == w.area && VM::PosXW == w.x && VM::PosYW == w.y && VM::DispW == w.d &&
+         VM::M10W == w.m[0] && VM::M01W == w.m[1] && VM::M20W == w.m[2] && VM::M11W == w.m[3] &&
+         VM::M02W == w.m[4] && VM::M30W == w.m[5] && VM::M21W == w.m[6] && VM::M12W == w.m[7] &&
+         VM::M03W == w.m[8] && VM::DescW == w.total();
+}
+
 /// `VM` is a Verilated scw_labelling module class (its /*verilator public*/ parameters are
 /// static constexpr members); `Params` an hls::labelling::LabellingParams. The edge queue's
 /// depth, the lanes' FIFOs and the Init phase's length set when the stage takes input, so they
@@ -23,7 +32,9 @@ constexpr bool labelling_params_match() {
          VM::LabelsPerTile == Params::kLabelsPerTile && VM::MaxObjects == Params::kMaxObjects &&
          VM::Lanes == Params::kLanes && VM::LaneFifo == Params::kLaneFifo &&
          VM::Nodes == Params::kNodes && VM::EdgeQueue == hls::labelling::kEdgeQueue &&
-         VM::InitClocks == hls::labelling::Labelling<Params>::kInitClocks;
+         VM::TakeRoom == hls::labelling::kTakeRoom &&
+         VM::InitClocks == hls::labelling::Labelling<Params>::kInitClocks &&
+         labelling_widths_match<VM>(Params::kWidths);
 }
 
 /// `VM` is a Verilated scw_labelling built with `Params` (check with labelling_params_match).

@@ -71,23 +71,20 @@ void check_config(const LabellingConfig& cfg) {
 ///             queue an edge for a merge unit over the whole node space
 ///   kResolve  every used node in ascending order: its root (parent[] points to smaller nodes
 ///             only, so the parent's root is already known) and its descriptor into the root's;
-///             the sweep copies each tile's label count for Emit. Then the next frame may start
+///             the sweep copies each lane's label count for Emit. Then the next frame may start
 /// Emit, alongside the next frame (it reads only the root and sum RAMs, which the next frame's
 /// Resolve waits for): every used node again; roots of at least min_area pixels leave as
 /// objects, up to MaxObjects; then the status word with `last`.
 template <typename Params>
 class Labelling {
  public:
-  static constexpr int TX = Params::kMaxTilesX;
-  static constexpr int TY = Params::kMaxTilesY;
-  static constexpr int L = Params::kLabelsPerTile;
   static constexpr int N = Params::kLanes;
   static constexpr int kNodes = Params::kNodes;
-  static constexpr int kTiles = TX * TY;
   /// Clocks of kInit: the parent RAM, a bank per lane cleared side by side, and with lanes the
-  /// border RAMs (a row per clock) and the strips' measure (a tile column per clock).
+  /// border RAMs (a row per clock), the strips' measure (a tile column per clock) and the lanes'
+  /// powers of their first columns (the RTL's running moments, 8 clocks after the measure).
   static constexpr int kInitClocks =
-      N == 1 ? kNodes : std::max({kNodes / N, Params::kMaxHeight, Params::kMaxTilesX});
+      N == 1 ? kNodes : std::max({kNodes / N, Params::kMaxHeight, Params::kMaxTilesX + 8});
   /// The border sweep's queue: it reads a row while it has room for two rows' edges.
   static constexpr int kBorderQueue = 8;
   using in_type = typename Params::in_beat;
@@ -151,7 +148,7 @@ class Labelling {
         resolve_clock(rd, pp);
         break;
     }
-    if (emitting) emit_clock(out_en, rd);
+    if (emitting) emit_clock(out_en);
     if (pp.rd) rd.parent = ram_.parent[pp.rd_addr];
     if (pp.wr) ram_.parent[pp.wr_addr] = pp.wr_data;
     rd_ = rd;
@@ -168,10 +165,11 @@ class Labelling {
   };
   /// One beat for one lane.
   using LaneBeat = std::array<disp_t, N>;
-  /// A node iterator over the used (tile, label) pairs, ascending; an empty tile costs a clock.
+  /// A node iterator over the used nodes, ascending: each lane's, lane by lane; a lane that
+  /// used none costs a clock.
   struct Sweep {
     bool active = false;
-    int tile = 0, label = 0;
+    int lane = 0, label = 0;
   };
   struct Fwd {  // a write of the previous clock, for the read issued alongside it
     bool valid = false;
@@ -292,7 +290,8 @@ class Labelling {
 
   // ---------------------------------------------------------------- kResolve
   void resolve_clock(Reads& rd, ParentPorts& pp) {
-    const bool done = !sweep_.active && !r1_.valid && !r2_.valid && !r3_.valid;
+    const bool done =
+        !sweep_.active && !r1_.valid && !r2_.valid && !r3_.valid && !r4_valid_ && !r5_valid_;
     // R0: the next node; read its parent[].
     R1 r1_next;
     int node = 0;
@@ -327,7 +326,9 @@ class Labelling {
       rd.acc = acc_[root];
       r3_next = {true, r2_.node, root};
     }
-    // R3: the node's descriptor into its root's (a root starts its own).
+    // R3: the node's descriptor into its root's (a root starts its own). The RTL passes the
+    // reads through the RAMs' output registers (R3), adds (R4) and writes (R5): the same sums,
+    // two clocks later, so the model adds here and counts the RTL's R4 and R5 for `done`.
     Fwd afwd_next;
     if (r3_.valid) {
       Object v;
@@ -337,10 +338,13 @@ class Labelling {
         const Object base = (afwd_.valid && afwd_.node == r3_.root) ? afwd_.value : rd_.acc;
         v = merge(base, rd_.desc);
       }
+      v = narrow(v, Params::kWidths);
       acc_[r3_.root] = v;
       afwd_next = {true, r3_.root, v};
     }
     if (done) start_emit();
+    r5_valid_ = r4_valid_;
+    r4_valid_ = r3_.valid;
     r1_ = r1_next;
     r2_ = r2_next;
     r3_ = r3_next;
@@ -348,20 +352,20 @@ class Labelling {
     rfwd_ = rfwd_next;
   }
 
-  /// Steps the sweep; returns whether this clock yields a node (an empty tile yields none).
-  /// Resolve's sweep reads the lanes' label counts and copies them for Emit's.
+  /// Steps the sweep; returns whether this clock yields a node (a lane that used none yields
+  /// none). Resolve's sweep reads the lanes' label counts and copies them for Emit's.
   bool next_node(int& node, bool resolve) {
     if (!sweep_.active) return false;
-    const int t = sweep_.tile;
+    const int t = sweep_.lane;
     const int count = resolve ? ram_.count[t] : emit_count_[t];
     if (resolve) emit_count_[t] = count;
     const bool yields = count > 0;
-    node = t * L + sweep_.label;
+    node = t * Params::kLaneNodes + sweep_.label;
     if (yields && sweep_.label + 1 < count) {
       ++sweep_.label;
     } else {
       sweep_.label = 0;
-      if (++sweep_.tile == kTiles) sweep_.active = false;
+      if (++sweep_.lane == N) sweep_.active = false;
     }
     return yields;
   }
@@ -381,43 +385,43 @@ class Labelling {
   }
 
   // ---------------------------------------------------------------- Emit
-  void emit_clock(bool out_en, Reads& rd) {
-    const bool swept = !sweep_.active && !e1_.valid;
-    bool consumed = !e1_.valid;
-    if (e1_.valid) {
-      const bool is_object = rd_.root == e1_.node && rd_.acc.area >= static_cast<std::uint32_t>(
-                                                                         cfg_.min_area);
+  void emit_clock(bool out_en) {
+    // E0 reads a node's root and sum, E1 (the RTL's decision whether it is an object) and E2
+    // (sends it) follow; a node that waits for the output register holds E1 and E2.
+    const bool swept = !sweep_.active && !e1_.valid && !e2_.valid;
+    bool adv = !e2_.valid;
+    if (e2_.valid) {
+      const bool is_object = e2_.root == e2_.node &&
+                             e2_.acc.area >= static_cast<std::uint32_t>(cfg_.min_area);
       if (!is_object) {
-        consumed = true;
+        adv = true;
       } else if (emitted_ >= Params::kMaxObjects) {
         object_overflow_ = true;
-        consumed = true;
+        adv = true;
       } else if (out_en) {
-        load_out(LabelWord{false, rd_.acc, {}}, false);
+        load_out(LabelWord{false, e2_.acc, {}}, false);
         ++emitted_;
-        consumed = true;
+        adv = true;
       }
     }
-    if (!consumed) return;  // the read registers hold the stalled node's words
-    E1 e1_next;
-    int node = 0;
-    if (next_node(node, false)) {
-      e1_next = {true, node};
-      rd.root = root_ram_[node];
-      rd.acc = acc_[node];
-    } else if (swept && out_en) {  // all nodes out: the status word
-      FrameStatus st;
+    if (!adv) return;
+    if (swept) {
+      if (!out_en) return;
+      FrameStatus st;  // all nodes out: the status word
       st.objects = static_cast<std::uint32_t>(emitted_);
       st.tile_overflow = emit_tile_overflow_;
       st.object_overflow = object_overflow_;
       st.stream_error = emit_err_;
       load_out(LabelWord{true, {}, st}, true);
       emitting_ = false;
-      e1_ = {};
       emitted_ = 0;
       object_overflow_ = false;
       return;
     }
+    e2_ = e1_;
+    E1 e1_next;
+    int node = 0;
+    if (next_node(node, false)) e1_next = {true, node, root_ram_[node], acc_[node]};
     e1_ = e1_next;
   }
 
@@ -445,7 +449,11 @@ class Labelling {
     bool valid = false;
     int node = 0, root = 0;
   };
-  using E1 = R1;
+  struct E1 {  // a node Emit read: its root and sum
+    bool valid = false;
+    int node = 0, root = 0;
+    Object acc;
+  };
 
   const LabellingConfig cfg_;
   int strip_ = 0;
@@ -459,7 +467,7 @@ class Labelling {
   // Emit: its frame's flags and label counts, objects sent.
   bool emitting_ = false, emit_tile_overflow_ = false, emit_err_ = false, object_overflow_ = false;
   int emitted_ = 0;
-  std::array<int, kTiles> emit_count_{};
+  std::array<int, N> emit_count_{};
   std::vector<std::int32_t>* node_map_ = nullptr;  // second pass, not hardware
   std::vector<std::int32_t> live_map_;
   // Lanes, and with lanes their FIFOs and the pixel each takes next from its FIFO's head.
@@ -478,7 +486,8 @@ class Labelling {
   R1 r1_;
   R2 r2_;
   R3 r3_;
-  E1 e1_;
+  E1 e1_, e2_;
+  bool r4_valid_ = false, r5_valid_ = false;  // the RTL's R4, R5
   Fwd afwd_;
   RootFwd rfwd_;
   // RAMs and their read registers.

@@ -14,9 +14,11 @@
 
 namespace scw::hls::labelling {
 
-/// Edges a lane's queue holds; the lane takes a pixel while at most kEdgeQueue - 4 are queued
-/// (two from the pixel in decision, two from the pixel being taken).
-inline constexpr int kEdgeQueue = 8;
+/// Edges a lane's queue holds; the lane takes a pixel while at most kEdgeQueue - kTakeRoom are
+/// queued: the pixel being taken and the five in P1 .. P5, whose edges are not queued yet, may
+/// each queue two.
+inline constexpr int kEdgeQueue = 16;
+inline constexpr int kTakeRoom = 12;
 
 /// A strip's first or last pixel of a row, kept for the strip-border join after the frame.
 struct BorderPixel {
@@ -24,27 +26,23 @@ struct BorderPixel {
   disp_t d = 0;
 };
 
-/// The stage's RAMs and registers that every lane writes in its own bank (a lane's nodes, tiles
-/// and rows) and the end-of-frame phases read across banks. Nodes are global numbers, in the
-/// order of a one-lane stage, so the objects leave in the same order at any lane count.
+/// The stage's RAMs and registers that every lane writes in its own bank (a lane's nodes and
+/// rows) and the end-of-frame phases read across banks. Lane i's nodes are i * kLaneNodes on.
 template <typename Params>
 struct LabellingRams {
-  static constexpr int kTiles = Params::kMaxTilesX * Params::kMaxTilesY;
   std::array<int, Params::kNodes> parent{};    // 0: a root; else parent + 1 (a smaller node)
   std::array<Object, Params::kNodes> desc{};   // each node's pixels
-  std::array<int, kTiles> count{};             // labels used per tile (registers)
+  std::array<int, Params::kLanes> count{};     // labels used per lane (registers)
   // Per lane: its strip's first (left) and last (right) pixel of every row.
   std::array<std::array<BorderPixel, Params::kMaxHeight>, Params::kLanes> left{}, right{};
   std::vector<std::int32_t>* node_map = nullptr;  // second-pass support, not hardware
 };
 
 /// Lane `index` of `Params::kLanes`: columns x0 .. x0 + width - 1 of the image, global tile
-/// columns from index * kLaneTilesX (so its nodes are a bit field away from the lane number).
+/// columns from index * kLaneTilesX; nodes index * kLaneNodes .. (index + 1) * kLaneNodes - 1.
 template <typename Params>
 class LabellingLane {
  public:
-  static constexpr int TX = Params::kMaxTilesX;
-  static constexpr int L = Params::kLabelsPerTile;
   using Rams = LabellingRams<Params>;
 
   void setup(int index, const LabellingConfig& cfg, int x0, int width) {
@@ -55,56 +53,69 @@ class LabellingLane {
   }
 
   /// Whether the lane takes a pixel this clock (if one is offered).
-  bool can_take() const { return queue_.count() <= kEdgeQueue - 4; }
+  bool can_take() const { return queue_.count() <= kEdgeQueue - kTakeRoom; }
   /// Nothing in flight: every pixel taken is in its node's descriptor and every edge merged.
-  bool idle() const { return !s1_.valid && !s2_.valid && queue_.count() == 0 && uf_.idle(); }
+  bool idle() const {
+    return !p1_.valid && !p2_.valid && !p3_.valid && !p4_valid_ && !s3_valid_ && !s4_valid_ &&
+           n_pend2_ == 0 && queue_.count() == 0 && uf_.idle();
+  }
 
-  /// S0: take the strip's next pixel and read the row buffer.
+  /// P0: take the strip's next pixel.
   void take(disp_t d) {
     s1_next_.valid = true;
     s1_next_.d = is_valid(d, cfg_) ? d : 0;
     s1_next_.x = x_;
     s1_next_.y = y_;
-    s1_next_.tile = ty_ * TX + index_ * Params::kLaneTilesX + tx_;
     s1_next_.has_left = x_ > 0;
     s1_next_.has_up = y_ > 0;
     s1_next_.left_same = tcol_ > 0;
     s1_next_.up_same = trow_ > 0;
-    rd_next_.up_d = row_d_[x_];
-    rd_next_.up_node1 = row_node1_[x_];
-    if (++tcol_ == cfg_.tile_w) tcol_ = 0, ++tx_;
+    if (++tcol_ == cfg_.tile_w) tcol_ = 0;
     if (++x_ == width_) {
-      x_ = tcol_ = tx_ = 0;
-      if (++trow_ == cfg_.tile_h) trow_ = 0, ++ty_;
+      x_ = tcol_ = 0;
+      if (++trow_ == cfg_.tile_h) trow_ = 0;
       ++y_;
     }
   }
 
-  /// S1, S2 and the merge unit, after S0 (if any) this clock. Returns whether a tile ran out
-  /// of labels.
+  /// P1 .. P6 and the merge unit, after P0 (if any) this clock. Returns whether the lane ran
+  /// out of labels. The RTL computes the joins in P1 and P2; they depend on the disparities only,
+  /// so the model computes them where P3 uses them.
   bool step(Rams& ram) {
     Reads& rd = rd_next_;
     bool overflow = false;
-    // S1: decide the node of the pixel S0 took last clock; queue its edges.
+    // P3: decide the node of the pixel P0 took three clocks ago; its edges queue in P5.
     S2 s2_next;
     Edge pushes[2];
     int n_push = 0;
-    if (s1_.valid) overflow = decide(ram, rd, s2_next, pushes, n_push);
-    // S2: add the pixel S1 decided last clock to its node's descriptor.
+    if (p3_.valid) overflow = decide(ram, rd, s2_next, pushes, n_push);
+    // P4 .. P6: the RTL reads the node's descriptor (P3), passes it through the RAM's output
+    // register (P4), adds the pixel (P5, forwarding its own last three results) and writes it
+    // back (P6). The sum is the same whichever clock computes it, so the model adds in P4; only
+    // the clocks until the lane is idle follow the RTL's stages.
     Fwd fwd_next;
     if (s2_.valid) {
       const Object base = (fwd_.valid && fwd_.node == s2_.node) ? fwd_.value : rd_.desc;
-      const Object v = s2_.init ? s2_.pix : merge(base, s2_.pix);
+      const Object v = narrow(s2_.init ? s2_.pix : merge(base, s2_.pix), Params::kWidths);
       ram.desc[s2_.node] = v;
       fwd_next = {true, s2_.node, v};
     }
+    s4_valid_ = s3_valid_;
+    s3_valid_ = s2_.valid;
     // Merge unit: one step on the edge at the queue's head.
     ParentPorts pp;
     const bool pop = uf_.clock(queue_, rd_.parent, pp);
     if (pp.rd) rd.parent = ram.parent[pp.rd_addr];
     if (pp.wr) ram.parent[pp.wr_addr] = pp.wr_data;
-    queue_.clock(pop, pushes, n_push);
-    s1_ = s1_next_;
+    queue_.clock(pop, pend2_, n_pend2_);  // P5: the edges P3 found two clocks ago
+    for (int i = 0; i < n_pend_; ++i) pend2_[i] = pend_[i];
+    n_pend2_ = n_pend_;
+    for (int i = 0; i < n_push; ++i) pend_[i] = pushes[i];
+    n_pend_ = n_push;
+    p4_valid_ = p3_.valid;
+    p3_ = p2_;
+    p2_ = p1_;
+    p1_ = s1_next_;
     s1_next_ = {};
     s2_ = s2_next;
     fwd_ = fwd_next;
@@ -114,7 +125,7 @@ class LabellingLane {
 
   /// After the frame's status word: the next frame starts at the strip's top left.
   void end_frame() {
-    x_ = y_ = tx_ = ty_ = tcol_ = trow_ = 0;
+    x_ = y_ = tcol_ = trow_ = 0;
     has_last_edge_ = false;
   }
 
@@ -122,7 +133,7 @@ class LabellingLane {
   struct S1 {
     bool valid = false;
     disp_t d = 0;  // 0 when not an object pixel
-    int x = 0, y = 0, tile = 0;  // x within the strip
+    int x = 0, y = 0;  // x within the strip
     bool has_left = false, has_up = false, left_same = false, up_same = false;
   };
   struct S2 {
@@ -134,8 +145,6 @@ class LabellingLane {
   /// The RAMs' read registers: rd_ as of the last edge, rd_next_ what this clock's reads load.
   struct Reads {
     int parent = 0;
-    disp_t up_d = 0;
-    int up_node1 = 0;
     Object desc;
   };
   struct Fwd {  // S2's write of the previous clock, for the read issued alongside it
@@ -145,21 +154,25 @@ class LabellingLane {
   };
 
   bool decide(Rams& ram, Reads& rd, S2& s2, Edge* pushes, int& n_push) {
-    const S1& p = s1_;
+    const S1& p = p3_;
     const bool valid = p.d != 0;
+    // The row above at this column, as the RTL's row buffer (or, in a strip of 2 or 3 pixels,
+    // its last pixels' registers) gives it.
+    const disp_t up_d = row_d_[p.x];
+    const int up_node1 = row_node1_[p.x];
     const bool jl = valid && p.has_left && left_node1_ != 0 && joins(p.d, left_d_);
-    const bool ju = valid && p.has_up && rd_.up_node1 != 0 && joins(p.d, rd_.up_d);
+    const bool ju = valid && p.has_up && up_node1 != 0 && joins(p.d, up_d);
     int node1 = 0;
     bool alloc = false, overflow = false;
-    int& count = ram.count[p.tile];
+    int& count = ram.count[static_cast<std::size_t>(index_)];
     if (!valid) {
       node1 = 0;
     } else if (jl && p.left_same) {
       node1 = left_node1_;
     } else if (ju && p.up_same) {
-      node1 = rd_.up_node1;
-    } else if (count < L) {
-      node1 = p.tile * L + count + 1;
+      node1 = up_node1;
+    } else if (count < Params::kLaneNodes) {
+      node1 = index_ * Params::kLaneNodes + count + 1;
       ++count;
       alloc = true;
     } else {
@@ -174,7 +187,7 @@ class LabellingLane {
         has_last_edge_ = true;
       };
       if (jl && left_node1_ != node1) push(left_node1_);
-      if (ju && rd_.up_node1 != node1) push(rd_.up_node1);
+      if (ju && up_node1 != node1) push(up_node1);
       s2.valid = true;
       s2.node = node1 - 1;
       s2.init = alloc;
@@ -199,9 +212,13 @@ class LabellingLane {
   LabellingConfig cfg_;
   int x0_ = 0, width_ = 0;
   // The position of the pixel S0 takes next, within the strip.
-  int x_ = 0, y_ = 0, tx_ = 0, ty_ = 0, tcol_ = 0, trow_ = 0;
-  S1 s1_, s1_next_;
+  int x_ = 0, y_ = 0, tcol_ = 0, trow_ = 0;
+  S1 s1_next_, p1_, p2_, p3_;  // P1 .. P3: taken one .. three clocks ago
+  bool p4_valid_ = false;       // a pixel decided last clock
+  Edge pend_[2], pend2_[2];     // the edges P3 found one and two clocks ago, queued in P5
+  int n_pend_ = 0, n_pend2_ = 0;
   S2 s2_;
+  bool s3_valid_ = false, s4_valid_ = false;  // the pixel's descriptor in the RTL's S3, S4
   Fwd fwd_;
   disp_t left_d_ = 0;
   int left_node1_ = 0;

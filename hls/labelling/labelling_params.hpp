@@ -3,6 +3,7 @@
 // object descriptor the stage emits (docs/labelling.md).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
@@ -12,8 +13,67 @@ namespace scw::hls::labelling {
 /// One input disparity, Q11.4 in 16 bits as the disparity stage emits it.
 using disp_t = std::uint16_t;
 
-/// Built-in capacities of one stage. The image is cut into tiles; each tile numbers its own
-/// objects with a table of LabelsPerTile labels, and a frame may report up to MaxObjects objects.
+/// Wide enough for S_3(65535) S_0(65535) (about 2^78).
+__extension__ typedef unsigned __int128 u128;
+
+/// The bits each stored descriptor field needs at a MaxWidthPx x MaxHeight frame: the one source
+/// of the widths. The RTL computes the same numbers as localparams of scw_labelling (AreaW ..
+/// M03W, public) and sim::labelling_params_match checks them equal. An object is a set of the
+/// frame's pixels and every term is non-negative, so each field is at most its value for the
+/// whole frame; tests/labelling/test_labelling_hls.cpp checks that a full-frame object meets each
+/// bound exactly at 1280 x 480.
+struct DescWidths {
+  int area = 0;  // 1 .. W H
+  int x = 0;     // a column, 0 .. W - 1 (x_min, x_max, closest_x, first_x)
+  int y = 0;     // a row, 0 .. H - 1
+  int d = 0;     // an object pixel's disparity, 1 .. 0x7fff (positive as int16)
+  // m_pq <= S_p(W) S_q(H), S_k(n) = sum_{i < n} i^k; in the order m10 m01 m20 m11 m02 m30 m21
+  // m12 m03.
+  int m[9] = {};
+  /// Every field's bits together: what one descriptor RAM word holds.
+  constexpr int total() const {
+    int t = area + 4 * x + 4 * y + 2 * d;
+    for (int w : m) t += w;
+    return t;
+  }
+};
+
+/// Bits that hold 0 .. v (at least 1).
+constexpr int bits_for(u128 v) {
+  int b = 1;
+  while (b < 128 && (v >> b) != 0) ++b;
+  return b;
+}
+
+/// S_k(n) = sum_{i=0}^{n-1} i^k for k = 0 .. 3, closed forms.
+constexpr u128 power_sum(int n, int k) {
+  const u128 m = static_cast<u128>(n);
+  const u128 s1 = m * (m - 1) / 2;
+  switch (k) {
+    case 0: return m;
+    case 1: return s1;
+    case 2: return (m - 1) * m * (2 * m - 1) / 6;
+    default: return s1 * s1;
+  }
+}
+
+constexpr DescWidths desc_widths(int max_width_px, int max_height) {
+  DescWidths w;
+  const int pq[9][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {3, 0}, {2, 1}, {1, 2}, {0, 3}};
+  w.area = bits_for(static_cast<u128>(max_width_px) * max_height);
+  w.x = bits_for(static_cast<u128>(max_width_px - 1));
+  w.y = bits_for(static_cast<u128>(max_height - 1));
+  w.d = 15;
+  for (int i = 0; i < 9; ++i)
+    w.m[i] = std::min(64, bits_for(power_sum(max_width_px, pq[i][0]) *
+                                   power_sum(max_height, pq[i][1])));  // Object's 64 bits
+  return w;
+}
+
+/// Built-in capacities of one stage. The image is cut into tiles, at most MaxTilesX x MaxTilesY;
+/// a frame's pixels may use MaxTilesX x MaxTilesY x LabelsPerTile labels (nodes) in all, any tile
+/// as many as it needs (each lane draws on its own equal share), and a frame may report up to
+/// MaxObjects objects.
 /// `Lanes` pixels per beat, each to its own lane: lane i labels the i-th of `Lanes` vertical
 /// strips of whole tile columns, one pixel per clock, and the strips are joined after the frame
 /// (docs/labelling.md "Lanes").
@@ -27,8 +87,10 @@ struct LabellingParams {
   static constexpr int kLabelsPerTile = LabelsPerTile;
   static constexpr int kMaxObjects = MaxObjects;
   static constexpr int kLanes = Lanes;
-  /// Nodes: every (tile, label) pair; node = (ty * MaxTilesX + tx) * LabelsPerTile + label.
+  /// Nodes: the labels of a frame. Lane i numbers its own from i * kLaneNodes up, in the order
+  /// its pixels need them.
   static constexpr int kNodes = MaxTilesX * MaxTilesY * LabelsPerTile;
+  static constexpr int kLaneNodes = kNodes / Lanes;
   /// Each lane's row buffer holds a strip of up to this many pixels, of up to this many tile
   /// columns; its input FIFO holds this many beats, enough that a strip's burst of beats
   /// (arriving Lanes times faster than the lane takes them) never holds the stream.
@@ -36,6 +98,7 @@ struct LabellingParams {
   static constexpr int kLaneTilesX = MaxTilesX / Lanes;
   static constexpr int kLaneFifo = kLaneWidthPx / Lanes > 2 ? kLaneWidthPx / Lanes : 2;
   using in_beat = Beat<disp_t, Lanes>;
+  static constexpr DescWidths kWidths = desc_widths(MaxWidthPx, MaxHeight);
   static_assert(MaxWidthPx >= 2 && MaxHeight >= 1, "an image of at least 2 x 1");
   static_assert(MaxWidthPx <= 65535 && MaxHeight <= 65535, "coordinates travel in 16 bits");
   static_assert(MaxTilesX >= 1 && MaxTilesY >= 1 && LabelsPerTile >= 1 && MaxObjects >= 1,
@@ -43,10 +106,6 @@ struct LabellingParams {
   static_assert(Lanes == 1 || Lanes == 2 || Lanes == 4, "1, 2 or 4 lanes (pixels per beat)");
   static_assert(MaxTilesX % Lanes == 0 && MaxWidthPx % Lanes == 0,
                 "the tile columns and the width split evenly over the lanes");
-  // With lanes, a node's lane is a bit field of its number: the RTL banks the node RAMs by lane.
-  static_assert(Lanes == 1 || ((MaxTilesX & (MaxTilesX - 1)) == 0 &&
-                               (LabelsPerTile & (LabelsPerTile - 1)) == 0),
-                "with lanes, MaxTilesX and LabelsPerTile are powers of two");
 };
 
 /// Run-time configuration (the RTL's cfg_* ports), stable while frames stream.
@@ -149,10 +208,33 @@ constexpr Object merge(const Object& a, const Object& b) {
   return o;
 }
 
+/// `o` with every field cut to its width: what a descriptor RAM stores (a no-op on every
+/// descriptor of a frame that fits, which is what the widths promise).
+constexpr Object narrow(const Object& o, const DescWidths& w) {
+  auto cut = [](std::uint64_t v, int bits) {
+    return bits >= 64 ? v : v & ((std::uint64_t{1} << bits) - 1);
+  };
+  Object n = o;
+  n.area = static_cast<std::uint32_t>(cut(o.area, w.area));
+  n.x_min = static_cast<std::uint16_t>(cut(o.x_min, w.x));
+  n.x_max = static_cast<std::uint16_t>(cut(o.x_max, w.x));
+  n.closest_x = static_cast<std::uint16_t>(cut(o.closest_x, w.x));
+  n.first_x = static_cast<std::uint16_t>(cut(o.first_x, w.x));
+  n.y_min = static_cast<std::uint16_t>(cut(o.y_min, w.y));
+  n.y_max = static_cast<std::uint16_t>(cut(o.y_max, w.y));
+  n.closest_y = static_cast<std::uint16_t>(cut(o.closest_y, w.y));
+  n.first_y = static_cast<std::uint16_t>(cut(o.first_y, w.y));
+  n.d_min = static_cast<std::uint16_t>(cut(o.d_min, w.d));
+  n.d_max = static_cast<std::uint16_t>(cut(o.d_max, w.d));
+  std::uint64_t* m[9] = {&n.m10, &n.m01, &n.m20, &n.m11, &n.m02, &n.m30, &n.m21, &n.m12, &n.m03};
+  for (int i = 0; i < 9; ++i) *m[i] = cut(*m[i], w.m[i]);
+  return n;
+}
+
 /// The frame's closing word.
 struct FrameStatus {
   std::uint32_t objects = 0;     // objects reported in this frame
-  bool tile_overflow = false;    // a tile needed more than LabelsPerTile labels
+  bool tile_overflow = false;    // a lane ran out of labels (its kLaneNodes)
   bool object_overflow = false;  // more than MaxObjects objects reached MinArea
   bool stream_error = false;     // the input broke the frame geometry (docs/streaming.md)
 

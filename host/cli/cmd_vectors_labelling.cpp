@@ -38,14 +38,14 @@ using hls::labelling::LabellingConfig;
 using hls::labelling::LabelPacket;
 using hls::labelling::Object;
 
-// The golden-vector build of the stage: frames up to 64 x 48, up to 4 x 4 tiles of 64 labels,
-// 64 objects a frame. Small tables, so that the overflow preset can exhaust them with a
-// readable frame; a replay builds scw_labelling with these parameters.
+// The golden-vector build of the stage: frames up to 64 x 48, up to 4 x 4 tiles, 16 labels a tile
+// (256 a frame), 64 objects a frame. Small tables, so that the overflow preset can exhaust them
+// with a readable frame; a replay builds scw_labelling with these parameters.
 constexpr int kMaxWidthPx = 64;
 constexpr int kMaxHeight = 48;
 constexpr int kMaxTilesX = 4;
 constexpr int kMaxTilesY = 4;
-constexpr int kLabelsPerTile = 64;
+constexpr int kLabelsPerTile = 16;
 constexpr int kMaxObjects = 64;
 using VecParams = hls::labelling::LabellingParams<kMaxWidthPx, kMaxHeight, kMaxTilesX, kMaxTilesY,
                                                   kLabelsPerTile, kMaxObjects>;
@@ -234,16 +234,24 @@ Preset overflow() {
   Preset p;
   p.tiles_x = 2;
   p.tiles_y = 2;
-  p.cfg = labelling::grid_config(kW, kH, p.tiles_x, p.tiles_y, 0, 1);
-  // 1: 96 dots in the top left 32 x 24 tile, more than its 64 labels; the others are empty.
+  p.cfg = labelling::grid_config(kW, kH, p.tiles_x, p.tiles_y, 0, 2);
+  // 1: 16 two-pixel objects, 288 single dots (a label each, below the minimum area), then 16
+  // more objects: the 256 labels of the frame run out before the last 16.
   cv::Mat tile = blank();
-  dots(tile, 1, 1, 16, 6, 300);
-  // 2: 40 dots in each tile (no tile runs out) make 160 objects, more than the 64 a frame
-  // reports.
+  dots(tile, 1, 1, 16, 1, 300), dots(tile, 1, 2, 16, 1, 300);
+  dots(tile, 0, 6, 32, 9, 300);
+  dots(tile, 1, 42, 16, 1, 300), dots(tile, 1, 43, 16, 1, 300);
+  // 2: 40 two-pixel objects in each tile (160 labels) make 160 objects, more than the 64 a
+  // frame reports.
   cv::Mat objects = blank();
   for (int ty = 0; ty < 2; ++ty)
-    for (int tx = 0; tx < 2; ++tx)
-      dots(objects, 32 * tx + 4, 24 * ty + 4, 10, 4, 320 + 16 * (2 * ty + tx));
+    for (int tx = 0; tx < 2; ++tx) {
+      const int d = 320 + 16 * (2 * ty + tx);
+      dots(objects, 32 * tx + 4, 24 * ty + 4, 10, 2, d);
+      dots(objects, 32 * tx + 4, 24 * ty + 5, 10, 2, d);
+      dots(objects, 32 * tx + 4, 24 * ty + 12, 10, 2, d);
+      dots(objects, 32 * tx + 4, 24 * ty + 13, 10, 2, d);
+    }
   // 3: an ordinary frame: two blocks and a ring across tile borders, which must come out whole.
   cv::Mat normal = blank();
   for (int y = 2; y < 14; ++y)  // across the vertical border; a ramp whose steps all join
@@ -258,9 +266,10 @@ Preset overflow() {
               {"object overflow", objects, Expect::kObjectOverflow},
               {"normal", normal, Expect::kClean}};
   p.description =
-      "scw labelling stage: three 64x48 frames, 2x2 tiles of 32x24 px, floor 0, min area 1: "
-      "96 isolated dots in the top left tile (64 labels a tile: tile_overflow, the first 64 "
-      "dots reported), 40 dots in each tile (160 objects, 64 reported: object_overflow), then "
+      "scw labelling stage: three 64x48 frames, 2x2 tiles of 32x24 px, floor 0, min area 2: "
+      "16 two-pixel objects, 288 isolated dots, 16 more objects (256 labels a frame: "
+      "tile_overflow, the first 16 objects reported), 40 two-pixel objects in each tile (160 "
+      "objects, 64 reported: object_overflow), then "
       "an ordinary frame (a ramp, a block, a ring around the tile corner) reported whole with a "
       "clean status";
   return p;
@@ -371,7 +380,7 @@ void check_frame(const Preset& p, const Frame& in, const FrameOut& got) {
       if (!tile && got.objects.size() != static_cast<std::size_t>(kMaxObjects))
         throw std::runtime_error(at + "an object overflow must report " +
                                  std::to_string(kMaxObjects) + " objects");
-      // The dots never join, so every object reported is whole: one of the reference's.
+      // The objects never join, so every one reported is whole: one of the reference's.
       for (const Object& o : got.objects)
         if (!in_ref(o))
           throw std::runtime_error(at + "the object at x " + std::to_string(o.first_x) + " y " +

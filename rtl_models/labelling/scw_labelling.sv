@@ -9,16 +9,16 @@
 // one pixel per clock. Phases:
 //   Init     after reset: clear the parent RAM (a bank per lane side by side), with lanes also
 //            the strip-border RAMs, and measure the strips (tile_w x tile columns / Lanes)
-//   Frame    one lane: S0 takes the pixel, S1 decides its node (a tile's label table: node =
-//            tile * LabelsPerTile + label) and queues edges, S2 adds it to its node's
-//            descriptor, the merge unit (union-find) runs alongside. Lanes: a beat goes whole into
+//   Frame    one lane: S0 takes the pixel, S1 decides its node (a new one from the lane's pool
+//            of LaneNodes: lane i's are i * LaneNodes on) and queues edges, S2 .. S4 add it to
+//            its node's descriptor, the merge unit (union-find) runs alongside. Lanes: a beat goes whole into
 //            the FIFO of the lane whose strip it is in; every lane does the same on its strip
 //   Drain    after the frame's last beat or a sof in mid-frame: wait for the lanes
 //   Border   (lanes only) every row: the two pixels either side of each strip border that join
 //            queue an edge for a merge unit over the whole node space
 //   Resolve  every used node in ascending order (R0 .. R3): its root (parents point to smaller
 //            nodes, so the parent's root is already known) and its descriptor into the root's;
-//            the sweep copies each tile's label count for Emit. Then the next frame may start
+//            the sweep copies each lane's label count for Emit. Then the next frame may start
 // Emit runs alongside the next frame (it reads only the root and sum RAMs, which the next
 // frame's Resolve waits for): every used node again (E0, E1); roots of at least cfg_min_area_i
 // pixels leave as objects, up to MaxObjects; then the status word with out_last_o.
@@ -60,38 +60,79 @@ module scw_labelling #(
   output logic            out_last_o,
   output logic            err_o
 );
-  localparam int unsigned Tiles = MaxTilesX * MaxTilesY;
-  localparam int unsigned Nodes /*verilator public*/ = Tiles * LabelsPerTile;
-  // hls::labelling::kEdgeQueue: a lane takes a pixel while at most EdgeQueue - 4 edges are queued
-  // (two from the pixel in decision, two from the pixel being taken).
-  localparam int unsigned EdgeQueue /*verilator public*/ = 8;
+  // The frame's labels: MaxTilesX x MaxTilesY x LabelsPerTile, each lane drawing on its share.
+  localparam int unsigned Nodes /*verilator public*/ = MaxTilesX * MaxTilesY * LabelsPerTile;
+  // hls::labelling::kEdgeQueue, kTakeRoom: a lane takes a pixel while at most EdgeQueue -
+  // TakeRoom edges are queued (two each from the pixel being taken and the five in P1 .. P5).
+  localparam int unsigned EdgeQueue /*verilator public*/ = 16;
+  localparam int unsigned TakeRoom /*verilator public*/ = 12;
   // LabellingParams::kLaneFifo: beats each lane's FIFO holds (lanes only).
   localparam int unsigned LaneWidthPx = MaxWidthPx / Lanes;
   localparam int unsigned LaneFifo /*verilator public*/ =
       (LaneWidthPx / Lanes > 2) ? LaneWidthPx / Lanes : 2;
   localparam int unsigned LaneNodes = Nodes / Lanes;
   // Labelling::kInitClocks: the parent banks side by side; with lanes also the border RAMs (a row
-  // per clock) and the strip measure (a tile column per clock).
+  // per clock), the strip measure (a tile column per clock) and the lanes' first columns'
+  // powers (scw_labelling_lane, 8 clocks after the measure).
   localparam int unsigned InitMax = (LaneNodes > MaxHeight) ? LaneNodes : MaxHeight;
   localparam int unsigned InitClocks /*verilator public*/ =
-      (Lanes == 1) ? Nodes : (InitMax > MaxTilesX ? InitMax : MaxTilesX);
+      (Lanes == 1) ? Nodes : (InitMax > MaxTilesX + 8 ? InitMax : MaxTilesX + 8);
   // Labelling::kBorderQueue: the border sweep reads a row while two rows' edges fit.
   localparam int unsigned BorderQueue = 8;
-  localparam int unsigned DescW  = OutW - 1;
+  // Descriptor field widths (hls::labelling::desc_widths, checked equal by
+  // sim::labelling_params_match): an object is a set of the frame's pixels and every term is
+  // non-negative, so a field is at most its value for the whole W x H frame: area <= W H, a
+  // column <= W - 1, a row <= H - 1, a disparity <= 0x7fff, m_pq <= S_p(W) S_q(H) with
+  // S_k(n) = sum_{i < n} i^k (1280 x 480: 20, 11, 9, 15 and m10 .. m03 29 28 39 37 36 49 47 45 44
+  // bits, 484 in all).
+  localparam logic [127:0] Wd = 128'(MaxWidthPx);
+  localparam logic [127:0] Hd = 128'(MaxHeight);
+  localparam logic [127:0] Sx1 = Wd * (Wd - 1) / 2;
+  localparam logic [127:0] Sx2 = (Wd - 1) * Wd * (2 * Wd - 1) / 6;
+  localparam logic [127:0] Sx3 = Sx1 * Sx1;
+  localparam logic [127:0] Sy1 = Hd * (Hd - 1) / 2;
+  localparam logic [127:0] Sy2 = (Hd - 1) * Hd * (2 * Hd - 1) / 6;
+  localparam logic [127:0] Sy3 = Sy1 * Sy1;
+  localparam int unsigned AreaW /*verilator public*/ = $clog2(Wd * Hd + 1);
+  localparam int unsigned PosXW /*verilator public*/ = (MaxWidthPx > 1) ? $clog2(Wd) : 1;
+  localparam int unsigned PosYW /*verilator public*/ = (MaxHeight > 1) ? $clog2(Hd) : 1;
+  localparam int unsigned DispW /*verilator public*/ = 15;
+  // bits of 0 .. b, at most 64
+  localparam int unsigned M10W /*verilator public*/ =
+      (Sx1 * Hd == 0) ? 1 : ($clog2(Sx1 * Hd + 1) > 64 ? 64 : $clog2(Sx1 * Hd + 1));
+  localparam int unsigned M01W /*verilator public*/ =
+      (Wd * Sy1 == 0) ? 1 : ($clog2(Wd * Sy1 + 1) > 64 ? 64 : $clog2(Wd * Sy1 + 1));
+  localparam int unsigned M20W /*verilator public*/ =
+      (Sx2 * Hd == 0) ? 1 : ($clog2(Sx2 * Hd + 1) > 64 ? 64 : $clog2(Sx2 * Hd + 1));
+  localparam int unsigned M11W /*verilator public*/ =
+      (Sx1 * Sy1 == 0) ? 1 : ($clog2(Sx1 * Sy1 + 1) > 64 ? 64 : $clog2(Sx1 * Sy1 + 1));
+  localparam int unsigned M02W /*verilator public*/ =
+      (Wd * Sy2 == 0) ? 1 : ($clog2(Wd * Sy2 + 1) > 64 ? 64 : $clog2(Wd * Sy2 + 1));
+  localparam int unsigned M30W /*verilator public*/ =
+      (Sx3 * Hd == 0) ? 1 : ($clog2(Sx3 * Hd + 1) > 64 ? 64 : $clog2(Sx3 * Hd + 1));
+  localparam int unsigned M21W /*verilator public*/ =
+      (Sx2 * Sy1 == 0) ? 1 : ($clog2(Sx2 * Sy1 + 1) > 64 ? 64 : $clog2(Sx2 * Sy1 + 1));
+  localparam int unsigned M12W /*verilator public*/ =
+      (Sx1 * Sy2 == 0) ? 1 : ($clog2(Sx1 * Sy2 + 1) > 64 ? 64 : $clog2(Sx1 * Sy2 + 1));
+  localparam int unsigned M03W /*verilator public*/ =
+      (Wd * Sy3 == 0) ? 1 : ($clog2(Wd * Sy3 + 1) > 64 ? 64 : $clog2(Wd * Sy3 + 1));
+  localparam int unsigned DescW /*verilator public*/ =
+      AreaW + 4 * PosXW + 4 * PosYW + 2 * DispW + M10W + M01W + M20W + M11W + M02W + M30W +
+      M21W + M12W + M03W;
   localparam int unsigned XW     = $clog2(MaxWidthPx);       // 0 .. MaxWidthPx - 1
   localparam int unsigned YW     = $clog2(MaxHeight + 1);    // 0 .. MaxHeight
   localparam int unsigned HW     = (MaxHeight > 1) ? $clog2(MaxHeight) : 1;  // a border row
-  localparam int unsigned TileW  = (Tiles > 1) ? $clog2(Tiles) : 1;
-  localparam int unsigned LabW   = (LabelsPerTile > 1) ? $clog2(LabelsPerTile) : 1;
-  localparam int unsigned CntW   = $clog2(LabelsPerTile + 1);
+  localparam int unsigned LabW   = (LaneNodes > 1) ? $clog2(LaneNodes) : 1;  // a lane's node
+  localparam int unsigned CntW   = $clog2(LaneNodes + 1);
   localparam int unsigned NodeW  = (Nodes > 1) ? $clog2(Nodes) : 1;
   localparam int unsigned N1W    = $clog2(Nodes + 1);         // node + 1, 0 = none
+  localparam int unsigned PW     = NodeW + 1;                 // parent word {linked, parent}
   localparam int unsigned LNodeW = (LaneNodes > 1) ? $clog2(LaneNodes) : 1;
   localparam int unsigned ObjW   = $clog2(MaxObjects + 1);
   localparam int unsigned InitW  = (InitClocks > 1) ? $clog2(InitClocks) : 1;
   localparam int unsigned LaneSW = (Lanes > 1) ? $clog2(Lanes) : 1;  // a lane number
   localparam int unsigned BordW  = N1W + 16;                 // border word {node + 1, d}
-  localparam logic [N1W-1:0] LabelsN1 = N1W'(LabelsPerTile);
+  localparam logic [N1W-1:0] LaneNodesN1 = N1W'(LaneNodes);
   localparam logic [16:0] Ppb = 17'(Lanes);                   // pixels per beat
 
   if (MaxWidthPx < 2 || MaxHeight < 1 || MaxWidthPx > 65535 || MaxHeight > 65535)
@@ -104,10 +145,6 @@ module scw_labelling #(
   if (!(Lanes == 1 || Lanes == 2 || Lanes == 4) || MaxTilesX % Lanes != 0 ||
       MaxWidthPx % Lanes != 0) begin : gen_bad_lanes
     $error("scw_labelling: 1, 2 or 4 lanes, over which the tile columns and width split evenly");
-  end
-  if (Lanes > 1 && ((MaxTilesX & (MaxTilesX - 1)) != 0 ||
-                    (LabelsPerTile & (LabelsPerTile - 1)) != 0)) begin : gen_bad_pow2
-    $error("scw_labelling: with lanes, MaxTilesX and LabelsPerTile are powers of two");
   end
 
   // Descriptors (hls::labelling::Object) are scw_pkg::label_desc_t.
@@ -126,25 +163,23 @@ module scw_labelling #(
   // Emit: its frame's flags and label counts, objects sent
   logic emit_q, emit_d, emit_tile_ovf_q, emit_err_q, obj_ovf_q, obj_ovf_d;
   logic [ObjW-1:0] emitted_q, emitted_d;
-  logic [CntW-1:0] emit_cnt_q [Tiles];
+  logic [CntW-1:0] emit_cnt_q [Lanes];
   // the strips, measured in Init: every lane's but the last is strip_q pixels wide
   logic [15:0] strip_q;
-  // R3's write into acc last clock
-  logic afwd_valid_q;
-  logic [NodeW-1:0] afwd_node_q;
-  logic [DescW-1:0] afwd_value_q;
   // R2's root written last clock
   logic rfwd_valid_q, rfwd_valid_d;
   logic [NodeW-1:0] rfwd_node_q, rfwd_root_q;
   // the node sweep of Resolve and Emit
   logic sweep_active_q, sweep_active_d;
-  logic [TileW-1:0] sweep_tile_q, sweep_tile_d;
+  logic [LaneSW-1:0] sweep_lane_q, sweep_lane_d;
   logic [LabW-1:0] sweep_label_q, sweep_label_d;
   // Resolve and Emit pipelines
   logic r1_valid_q, r1_valid_d, r2_valid_q, r2_valid_d, r2_self_q, r2_self_d;
-  logic r3_valid_q, r3_valid_d, e1_valid_q, e1_valid_d;
+  logic r3_valid_q, r4_valid_q, r5_valid_q, r6_valid_q;
+  logic e1_valid_q, e1_valid_d, e2_valid_q, e2_valid_d, e2_obj_q, e2_obj_d;
   logic [NodeW-1:0] r1_node_q, r1_node_d, r2_node_q, r2_node_d, r2_parent_q, r2_parent_d;
-  logic [NodeW-1:0] r3_node_q, r3_node_d, r3_root_q, r3_root_d, e1_node_q, e1_node_d;
+  logic [NodeW-1:0] r3_root_q, r4_root_q, r5_root_q, r6_root_q, e1_node_q, e1_node_d;
+  logic r3_self_q;
   // output register
   logic out_valid_q, out_valid_d, out_load, out_last_q, out_last_d;
   logic [OutW-1:0] out_data_q, out_data_d;
@@ -161,7 +196,7 @@ module scw_labelling #(
   // ---- the stage's ports into the lanes' banks (Init, Border, Resolve) ---------------------
   logic par_re, par_we;
   logic [NodeW-1:0] par_raddr, par_waddr;
-  logic [N1W-1:0] par_wdata, par_rd;
+  logic [PW-1:0] par_wdata, par_rd;
   logic desc_re;
   logic [DescW-1:0] desc_rd;
   logic [CntW-1:0] sw_count;
@@ -171,7 +206,7 @@ module scw_labelling #(
   logic [Lanes*16-1:0] lane_px;
   logic [Lanes*YW-1:0] lane_brow;
   logic [Lanes*BordW-1:0] lane_bword;
-  logic [Lanes*N1W-1:0] lane_par_rd;
+  logic [Lanes*PW-1:0] lane_par_rd;
   logic [Lanes*DescW-1:0] lane_desc_rd;
   logic [Lanes*CntW-1:0] lane_count;
   logic [Lanes*16-1:0] lane_x0, lane_width;
@@ -181,7 +216,8 @@ module scw_labelling #(
   logic [XW-1:0] xe, lane_cole;
   logic [YW-1:0] ye;
   logic [LaneSW-1:0] lanee;
-  logic [16:0] xn, lane_coln, y1;
+  logic [XW-1:0] xn, lane_coln;
+  logic [YW-1:0] y1;
   logic x_wrap;
   logic [Lanes-1:0] fifo_ready, fifo_valid;
 
@@ -193,16 +229,25 @@ module scw_labelling #(
   assign beat_drop   = take && !in_frame_q && !in_sof_i;  // outside any frame
   assign beat_in     = take && (in_frame_q || in_sof_i);  // a beat of the frame
 
-  // The beat's position: a sof restarts the counters.
+  // The beat's position: a sof restarts the counters. Whether the beat ends its row, the frame or
+  // its lane's strip is compared from the registers for both cases, so that the choice by
+  // frame_start (which follows in_ready) comes last.
+  logic x_wrap_cont, x_wrap_start, y_last_cont, y_last_start, strip_end_cont, strip_end_start;
   assign xe        = frame_start ? '0 : x_q;
   assign ye        = frame_start ? '0 : y_q;
   assign lanee     = frame_start ? '0 : lane_q;
   assign lane_cole = frame_start ? '0 : lane_col_q;
-  assign xn        = 17'(xe) + Ppb;
-  assign lane_coln = 17'(lane_cole) + Ppb;
-  assign y1        = 17'(ye) + 17'd1;
-  assign x_wrap     = xn == {1'b0, cfg_width_i};
-  assign frame_last = beat_in && x_wrap && (y1 == {1'b0, cfg_height_i});
+  assign xn        = xe + XW'(Lanes);  // (only taken when the row goes on: no wrap)
+  assign lane_coln = lane_cole + XW'(Lanes);
+  assign y1        = ye + 1'b1;
+  assign x_wrap_cont     = 17'(x_q) + Ppb == {1'b0, cfg_width_i};
+  assign x_wrap_start    = Ppb == {1'b0, cfg_width_i};
+  assign y_last_cont     = 17'(y_q) + 17'd1 == {1'b0, cfg_height_i};
+  assign y_last_start    = cfg_height_i == 16'd1;
+  assign strip_end_cont  = 17'(lane_col_q) + Ppb == {1'b0, strip_q};
+  assign strip_end_start = Ppb == {1'b0, strip_q};
+  assign x_wrap     = frame_start ? x_wrap_start : x_wrap_cont;
+  assign frame_last = beat_in && x_wrap && (frame_start ? y_last_start : y_last_cont);
   assign eol_err    = beat_in && (in_eol_i != x_wrap);
 
   always_comb begin
@@ -213,18 +258,18 @@ module scw_labelling #(
     if (beat_in) begin
       if (x_wrap) begin
         x_d        = '0;
-        y_d        = YW'(y1);
+        y_d        = y1;
         lane_d     = '0;
         lane_col_d = '0;
       end else begin
-        x_d = XW'(xn);
+        x_d = xn;
         y_d = ye;
-        if (lane_coln == {1'b0, strip_q}) begin
+        if (frame_start ? strip_end_start : strip_end_cont) begin
           lane_d     = lanee + 1'b1;
           lane_col_d = '0;
         end else begin
           lane_d     = lanee;
-          lane_col_d = XW'(lane_coln);
+          lane_col_d = lane_coln;
         end
       end
     end
@@ -291,7 +336,21 @@ module scw_labelling #(
       .LabelsPerTile(LabelsPerTile),
       .Lanes        (Lanes),
       .Lane         (i),
-      .EdgeQueue    (EdgeQueue)
+      .EdgeQueue    (EdgeQueue),
+      .TakeRoom     (TakeRoom),
+      .AreaW        (AreaW),
+      .PosXW        (PosXW),
+      .PosYW        (PosYW),
+      .DispW        (DispW),
+      .M10W         (M10W),
+      .M01W         (M01W),
+      .M20W         (M20W),
+      .M11W         (M11W),
+      .M02W         (M02W),
+      .M30W         (M30W),
+      .M21W         (M21W),
+      .M12W         (M12W),
+      .M03W         (M03W)
     ) u_lane (
       .clk_i,
       .rst_ni,
@@ -318,26 +377,24 @@ module scw_labelling #(
       .par_we_i     (par_we),
       .par_waddr_i  (par_waddr),
       .par_wdata_i  (par_wdata),
-      .par_rd_o     (lane_par_rd[i*N1W +: N1W]),
+      .par_rd_o     (lane_par_rd[i*PW +: PW]),
       .desc_re_i    (desc_re),
       .desc_raddr_i (r2_node_q),
       .desc_rd_o    (lane_desc_rd[i*DescW +: DescW]),
-      .count_tile_i (sweep_tile_q),
       .count_o      (lane_count[i*CntW +: CntW])
     );
   end
 
-  // Only the lane whose node or tile it is answers; the others give 0.
+  // Only the lane whose node it is answers; the others give 0.
   always_comb begin
     par_rd   = '0;
     desc_rd  = '0;
-    sw_count = '0;
     for (int i = 0; i < Lanes; i++) begin
-      par_rd   = par_rd | lane_par_rd[i*N1W +: N1W];
+      par_rd   = par_rd | lane_par_rd[i*PW +: PW];
       desc_rd  = desc_rd | lane_desc_rd[i*DescW +: DescW];
-      sw_count = sw_count | lane_count[i*CntW +: CntW];
     end
   end
+  assign sw_count = lane_count[32'(sweep_lane_q)*CntW +: CntW];
 
   logic lanes_idle;
   assign lanes_idle = &lane_idle;
@@ -346,7 +403,7 @@ module scw_labelling #(
   logic border_done;
   logic tuf_rd_en, tuf_wr_en;
   logic [NodeW-1:0] tuf_rd_addr, tuf_wr_addr;
-  logic [N1W-1:0] tuf_wr_data;
+  logic [PW-1:0] tuf_wr_data;
 
   if (Lanes == 1) begin : gen_no_border
     assign border_done = 1'b1;
@@ -366,6 +423,7 @@ module scw_labelling #(
     logic [Borders*BordW-1:0] right_rd, left_rd;  // border b: lane b's last, lane b + 1's first
     logic [Borders-1:0] joined;
     logic [QCntW-1:0] q_count;
+    logic q_room;
     logic [PushW-1:0] push_n;
     logic [Borders*NodeW-1:0] push_a, push_b;
     logic [Borders-1:0] push;
@@ -375,8 +433,7 @@ module scw_labelling #(
     logic unused_border;  // the first strip has no left border, the last no right
     assign unused_border = lane_left_we[0] ^ lane_right_we[Lanes-1];
 
-    assign b_read      = ph_border && active_q &&
-                         (q_count <= QCntW'(BorderQueue - 2 * Borders));
+    assign b_read      = ph_border && active_q && q_room;
     assign border_done = !active_q && !b1_valid_q && (q_count == '0) && uf_idle;
 
     for (genvar b = 0; b < Borders; b++) begin : gen_ram
@@ -480,7 +537,8 @@ module scw_labelling #(
     scw_labelling_merge_unit #(
       .Nodes  (Nodes),
       .Depth  (BorderQueue),
-      .MaxPush(Borders)
+      .MaxPush(Borders),
+      .Room   (2 * Borders)
     ) u_merge_unit (
       .clk_i,
       .rst_ni,
@@ -490,6 +548,7 @@ module scw_labelling #(
       .push_b_i (push_b),
       .rd_data_i(par_rd),
       .count_o  (q_count),
+      .room_o   (q_room),
       .idle_o   (uf_idle),
       .rd_en_o  (tuf_rd_en),
       .rd_addr_o(tuf_rd_addr),
@@ -530,44 +589,77 @@ module scw_labelling #(
     end
   end
 
-  // ---- R3 (Resolve): acc[root] = desc[node] (the root itself) or acc[root] + desc[node] -----
-  logic [DescW-1:0] acc_rd, r3_a, r3_merged, r3_value;
+  // ---- R3 .. R5 (Resolve): acc[root] = desc[node] (the root itself) or acc[root] + desc[node]
+  // R2 reads both; R3 passes them through the RAMs' output registers and chooses R4's
+  // forwarding (the sum R4 computes now, or one of the two before, which R2's read missed);
+  // R4 adds; R5 writes. A root starts from the empty descriptor, merge()'s identity.
+  logic [DescW-1:0] acc_rd, desc_q, r4_a, r4_value, res_q, res2_q, old_q, old_d, empty;
+  logic m1_q, m1_d, old_hit_q, old_hit_d, r5_match, r6_match;
 
-  assign r3_a = (afwd_valid_q && afwd_node_q == r3_root_q) ? afwd_value_q : acc_rd;
+  // empty: no pixel (area and sums 0, minima at their largest, maxima 0, the first pixel last)
+  always_comb begin
+    int unsigned at;
+    empty = '0;
+    at = AreaW;
+    empty[at +: PosXW] = '1;  at = at + 2 * PosXW;     // x_min
+    empty[at +: PosYW] = '1;  at = at + 2 * PosYW;     // y_min
+    empty[at +: DispW] = '1;  at = at + 2 * DispW;     // d_min
+    at = at + PosXW + PosYW;                            // closest
+    empty[at +: PosXW + PosYW] = '1;                    // first
+  end
 
-  scw_labelling_merge u_merge (
-    .a_i(r3_a),
-    .b_i(desc_rd),
-    .o_o(r3_merged)
+  assign r5_match  = r5_valid_q && (r5_root_q == r3_root_q);
+  assign r6_match  = r6_valid_q && (r6_root_q == r3_root_q);
+  assign m1_d      = r4_valid_q && (r4_root_q == r3_root_q) && !r3_self_q;
+  assign old_hit_d = r3_self_q || r5_match || r6_match;
+  assign old_d     = r3_self_q ? empty : (r5_match ? res_q : res2_q);
+  assign r4_a      = m1_q ? res_q : (old_hit_q ? old_q : acc_rd);
+
+  scw_labelling_merge #(
+    .AreaW(AreaW),
+    .PosXW(PosXW),
+    .PosYW(PosYW),
+    .DispW(DispW),
+    .M10W (M10W),
+    .M01W (M01W),
+    .M20W (M20W),
+    .M11W (M11W),
+    .M02W (M02W),
+    .M30W (M30W),
+    .M21W (M21W),
+    .M12W (M12W),
+    .M03W (M03W)
+  ) u_merge (
+    .a_i(r4_a),
+    .b_i(desc_q),
+    .o_o(r4_value)
   );
 
-  assign r3_value = (r3_root_q == r3_node_q) ? desc_rd : r3_merged;
-
-  // ---- the node sweep (Resolve and Emit): used nodes ascending, an empty tile costs a clock -
+  // ---- the node sweep (Resolve and Emit): used nodes ascending, an empty lane costs a clock -
   // Resolve reads the lanes' label counts and copies them for Emit, whose frame they then leave.
   logic sw_yields, sw_step, sw_start;
   logic [NodeW-1:0] sw_node;
   logic [CntW-1:0] sw_cnt;
 
-  assign sw_cnt    = ph_resolve ? sw_count : emit_cnt_q[sweep_tile_q];
+  assign sw_cnt    = ph_resolve ? sw_count : emit_cnt_q[sweep_lane_q];
   assign sw_yields = sweep_active_q && (sw_cnt != '0);
-  assign sw_node   = NodeW'(N1W'(sweep_tile_q) * LabelsN1 + N1W'(sweep_label_q));
+  assign sw_node   = NodeW'(N1W'(sweep_lane_q) * LaneNodesN1 + N1W'(sweep_label_q));
 
   always_comb begin
     sweep_active_d = sweep_active_q;
-    sweep_tile_d   = sweep_tile_q;
+    sweep_lane_d   = sweep_lane_q;
     sweep_label_d  = sweep_label_q;
     if (sw_start) begin
       sweep_active_d = 1'b1;
-      sweep_tile_d   = '0;
+      sweep_lane_d   = '0;
       sweep_label_d  = '0;
     end else if (sw_step && sweep_active_q) begin
       if (sw_yields && ((CntW + 1)'(sweep_label_q) + 1'b1 < (CntW + 1)'(sw_cnt))) begin
         sweep_label_d = sweep_label_q + 1'b1;
       end else begin
         sweep_label_d = '0;
-        sweep_tile_d  = sweep_tile_q + 1'b1;
-        if (sweep_tile_q == TileW'(Tiles - 1)) sweep_active_d = 1'b0;
+        sweep_lane_d  = sweep_lane_q + 1'b1;
+        if (sweep_lane_q == LaneSW'(Lanes - 1)) sweep_active_d = 1'b0;
       end
     end
   end
@@ -578,38 +670,36 @@ module scw_labelling #(
   logic root_re, root_we, acc_re, acc_we;
   logic [NodeW-1:0] root_raddr, root_rd, acc_raddr;
 
-  assign res_done    = !sweep_active_q && !r1_valid_q && !r2_valid_q && !r3_valid_q;
+  assign res_done    = !sweep_active_q && !r1_valid_q && !r2_valid_q && !r3_valid_q &&
+                       !r4_valid_q && !r5_valid_q;
   assign r1_valid_d  = ph_resolve && sw_yields;
   assign r1_node_d   = sw_node;
-  assign r1_root     = par_rd == '0;
+  assign r1_root     = !par_rd[NodeW];
   assign r2_valid_d  = ph_resolve && r1_valid_q;
   assign r2_node_d   = r1_node_q;
   assign r2_self_d   = r1_root;
-  assign r2_parent_d = NodeW'(par_rd - 1'b1);
+  assign r2_parent_d = par_rd[NodeW-1:0];
   // The parent's root: read last clock, or written by R2 last clock (the one write that read
   // could not see).
   assign r2_root     = r2_self_q ? r2_node_q
                      : (rfwd_valid_q && rfwd_node_q == r2_parent_q) ? rfwd_root_q : root_rd;
   assign rfwd_valid_d = ph_resolve && r2_valid_q;
-  assign r3_valid_d  = ph_resolve && r2_valid_q;
-  assign r3_node_d   = r2_node_q;
-  assign r3_root_d   = r2_root;
 
-  // ---- Emit: E0 reads a node's root and sum, E1 sends it if it is an object ----------------
-  logic swept, is_object, objects_full, consumed, emit_read, emit_status, emit_object, out_en;
+  // ---- Emit: E0 reads a node's root, its big flag and sum, E1 decides whether it is an object,
+  // E2 sends it. A node waiting for the output register holds E1, E2 and the reads.
+  logic swept, objects_full, adv, emit_read, emit_status, emit_object, out_en, big_rd;
 
   assign out_en       = !out_valid_q || out_ready_i;
-
-  assign swept        = !sweep_active_q && !e1_valid_q;
-  assign is_object    = (root_rd == e1_node_q) && (acc_rd[31:0] >= cfg_min_area_i);  // area
+  assign swept        = !sweep_active_q && !e1_valid_q && !e2_valid_q;
   assign objects_full = emitted_q >= ObjW'(MaxObjects);
-  assign emit_object  = emit_q && e1_valid_q && is_object && !objects_full && out_en;
-  // The read registers hold a node that waits for the output register.
-  assign consumed     = !e1_valid_q || !is_object || objects_full || out_en;
-  assign emit_read    = emit_q && consumed && sw_yields;
-  assign emit_status  = emit_q && consumed && !sw_yields && swept && out_en;
-  assign e1_valid_d   = emit_q && consumed ? sw_yields : e1_valid_q;
-  assign e1_node_d    = emit_q && consumed ? sw_node : e1_node_q;
+  assign emit_object  = emit_q && e2_valid_q && e2_obj_q && !objects_full && out_en;
+  assign adv          = !e2_valid_q || !e2_obj_q || objects_full || out_en;
+  assign emit_read    = emit_q && adv && sw_yields;
+  assign emit_status  = emit_q && swept && out_en;
+  assign e1_valid_d   = emit_q && adv ? sw_yields : e1_valid_q;
+  assign e1_node_d    = emit_q && adv ? sw_node : e1_node_q;
+  assign e2_valid_d   = emit_q && adv ? e1_valid_q : e2_valid_q;
+  assign e2_obj_d     = emit_q && adv ? (root_rd == e1_node_q) && big_rd : e2_obj_q;
 
   // ---- control -----------------------------------------------------------------------------
   assign drained   = (phase_q == PhDrain) && lanes_idle && (fifo_valid == '0);
@@ -617,7 +707,7 @@ module scw_labelling #(
   // Resolve waits for the last frame's Emit, which still reads the sums.
   assign sw_start  = ((Lanes == 1 ? drained : ph_border && border_done) && !emit_q) ||
                      frame_end;
-  assign sw_step   = ph_resolve || (emit_q && consumed);
+  assign sw_step   = ph_resolve || (emit_q && adv);
 
   always_comb begin
     phase_d       = phase_q;
@@ -627,7 +717,7 @@ module scw_labelling #(
     err_sticky_d  = err_sticky_q;
     tile_ovf_d    = tile_ovf_q || (|lane_ovf);
     emit_d        = emit_q && !emit_status;
-    obj_ovf_d     = obj_ovf_q || (emit_q && e1_valid_q && is_object && objects_full);
+    obj_ovf_d     = obj_ovf_q || (emit_q && e2_valid_q && e2_obj_q && objects_full);
     emitted_d     = emitted_q + ObjW'(emit_object);
     if (emit_status) begin
       emitted_d = '0;
@@ -651,15 +741,11 @@ module scw_labelling #(
           err_frame_d  = 1'b1;
           err_sticky_d = 1'b1;
         end
-        if (frame_last) begin
-          in_frame_d = 1'b0;
-          phase_d    = PhDrain;
-        end
+        if (frame_last) in_frame_d = 1'b0;
         if (sof_mid) begin  // close the frame early, take the sof afterwards
           err_frame_d  = 1'b1;
           err_sticky_d = 1'b1;
           in_frame_d   = 1'b0;
-          phase_d      = PhDrain;
         end
         if (drained) begin
           if (Lanes > 1) phase_d = PhBorder;
@@ -679,6 +765,37 @@ module scw_labelling #(
       end
       default: phase_d = PhInit;
     endcase
+    // The frame's last beat or a sof in mid-frame (both only in PhFrame), decided last: they
+    // follow in_ready, the longest of the inputs.
+    if (frame_last || sof_mid) phase_d = PhDrain;
+  end
+
+  // The output word carries every field at full width (scw_pkg::label_desc_t).
+  scw_pkg::label_desc_t out_desc;
+  always_comb begin
+    int unsigned at;
+    out_desc = '0;
+    at = 0;
+    out_desc.area      = 32'(acc_rd[at +: AreaW]);  at = at + AreaW;
+    out_desc.x_min     = 16'(acc_rd[at +: PosXW]);  at = at + PosXW;
+    out_desc.x_max     = 16'(acc_rd[at +: PosXW]);  at = at + PosXW;
+    out_desc.y_min     = 16'(acc_rd[at +: PosYW]);  at = at + PosYW;
+    out_desc.y_max     = 16'(acc_rd[at +: PosYW]);  at = at + PosYW;
+    out_desc.d_min     = 16'(acc_rd[at +: DispW]);  at = at + DispW;
+    out_desc.d_max     = 16'(acc_rd[at +: DispW]);  at = at + DispW;
+    out_desc.closest_x = 16'(acc_rd[at +: PosXW]);  at = at + PosXW;
+    out_desc.closest_y = 16'(acc_rd[at +: PosYW]);  at = at + PosYW;
+    out_desc.first_x   = 16'(acc_rd[at +: PosXW]);  at = at + PosXW;
+    out_desc.first_y   = 16'(acc_rd[at +: PosYW]);  at = at + PosYW;
+    out_desc.m10       = 64'(acc_rd[at +: M10W]);   at = at + M10W;
+    out_desc.m01       = 64'(acc_rd[at +: M01W]);   at = at + M01W;
+    out_desc.m20       = 64'(acc_rd[at +: M20W]);   at = at + M20W;
+    out_desc.m11       = 64'(acc_rd[at +: M11W]);   at = at + M11W;
+    out_desc.m02       = 64'(acc_rd[at +: M02W]);   at = at + M02W;
+    out_desc.m30       = 64'(acc_rd[at +: M30W]);   at = at + M30W;
+    out_desc.m21       = 64'(acc_rd[at +: M21W]);   at = at + M21W;
+    out_desc.m12       = 64'(acc_rd[at +: M12W]);   at = at + M12W;
+    out_desc.m03       = 64'(acc_rd[at +: M03W]);
   end
 
   // The output register: an object's sum, or the status word (sim/labelling_pack.hpp).
@@ -686,7 +803,7 @@ module scw_labelling #(
     out_valid_d = out_valid_q && !out_ready_i;
     out_load    = emit_object || emit_status;
     out_last_d  = emit_status;
-    out_data_d  = {acc_rd, 1'b0};
+    out_data_d  = {out_desc, 1'b0};
     if (emit_status) begin
       out_data_d = '0;
       out_data_d[0] = 1'b1;
@@ -728,30 +845,30 @@ module scw_labelling #(
   assign root_we    = ph_resolve && r2_valid_q;
   assign acc_re     = (ph_resolve && r2_valid_q) || emit_read;
   assign acc_raddr  = ph_resolve ? r2_root : sw_node;
-  assign acc_we     = ph_resolve && r3_valid_q;
+  assign acc_we     = ph_resolve && r5_valid_q;
 
-  scw_ram_sdp #(.Width(NodeW), .Depth(Nodes)) u_root_ram (
-    .clk_i,
-    .wr_en_i  (root_we),
-    .wr_addr_i(r2_node_q),
-    .wr_data_i(r2_root),
-    .rd_en_i  (root_re),
-    .rd_addr_i(root_raddr),
-    .rd_data_o(root_rd)
-  );
+  // Roots and big flags (the root's area reached cfg_min_area_i, written with each sum, so the
+  // last write, the root's whole area, decides) in distributed RAM: Resolve's next read address
+  // and Emit's decision follow from their words a clock after the read.
+  (* ram_style = "distributed" *) logic [NodeW-1:0] root_mem_q [Nodes];
+  (* ram_style = "distributed" *) logic big_mem_q [Nodes];
+  always_ff @(posedge clk_i) begin
+    if (root_we) root_mem_q[r2_node_q] <= r2_root;
+    if (acc_we) big_mem_q[r5_root_q] <= 32'(res_q[AreaW-1:0]) >= cfg_min_area_i;
+  end
+  always_ff @(posedge clk_i) begin
+    if (root_re) root_rd <= root_mem_q[root_raddr];
+    if (emit_read) big_rd <= big_mem_q[sw_node];
+  end
 
-  // Descriptors at their values' widths (scw_labelling_desc_ram), full width on the ports.
-  scw_labelling_desc_ram #(
-    .MaxWidthPx(MaxWidthPx),
-    .MaxHeight (MaxHeight),
-    .Depth     (Nodes)
-  ) u_acc_ram (
+  scw_labelling_desc_ram #(.DescW(DescW), .Depth(Nodes), .OutReg(1'b1)) u_acc_ram (
     .clk_i,
     .wr_en_i  (acc_we),
-    .wr_addr_i(r3_root_q),
-    .wr_data_i(r3_value),
+    .wr_addr_i(r5_root_q),
+    .wr_data_i(res_q),
     .rd_en_i  (acc_re),
     .rd_addr_i(acc_raddr),
+    .rd_next_i(!emit_q || adv),
     .rd_data_o(acc_rd)
   );
 
@@ -768,13 +885,16 @@ module scw_labelling #(
       emit_q         <= 1'b0;
       obj_ovf_q      <= 1'b0;
       emitted_q      <= '0;
-      afwd_valid_q   <= 1'b0;
       rfwd_valid_q   <= 1'b0;
       sweep_active_q <= 1'b0;
       r1_valid_q     <= 1'b0;
       r2_valid_q     <= 1'b0;
       r3_valid_q     <= 1'b0;
+      r4_valid_q     <= 1'b0;
+      r5_valid_q     <= 1'b0;
+      r6_valid_q     <= 1'b0;
       e1_valid_q     <= 1'b0;
+      e2_valid_q     <= 1'b0;
       out_valid_q    <= 1'b0;
     end else begin
       phase_q        <= phase_d;
@@ -787,21 +907,24 @@ module scw_labelling #(
       emit_q         <= emit_d;
       obj_ovf_q      <= obj_ovf_d;
       emitted_q      <= emitted_d;
-      afwd_valid_q   <= ph_resolve && r3_valid_q;
       rfwd_valid_q   <= rfwd_valid_d;
       sweep_active_q <= sweep_active_d;
       r1_valid_q     <= r1_valid_d;
       r2_valid_q     <= r2_valid_d;
-      r3_valid_q     <= r3_valid_d;
+      r3_valid_q     <= ph_resolve && r2_valid_q;
+      r4_valid_q     <= r3_valid_q;
+      r5_valid_q     <= r4_valid_q;
+      r6_valid_q     <= r5_valid_q;
       e1_valid_q     <= e1_valid_d;
+      e2_valid_q     <= e2_valid_d;
       out_valid_q    <= out_valid_d;
     end
   end
 
-  // Emit's label counts, copied as Resolve's sweep passes each tile.
-  for (genvar t = 0; t < Tiles; t++) begin : gen_emit_cnt
+  // Emit's label counts, copied as Resolve's sweep passes each lane.
+  for (genvar t = 0; t < Lanes; t++) begin : gen_emit_cnt
     always_ff @(posedge clk_i) begin
-      if (ph_resolve && sweep_active_q && sweep_tile_q == TileW'(t)) emit_cnt_q[t] <= sw_count;
+      if (ph_resolve && sweep_active_q && sweep_lane_q == LaneSW'(t)) emit_cnt_q[t] <= sw_count;
     end
   end
 
@@ -811,19 +934,37 @@ module scw_labelling #(
     y_q           <= y_d;
     lane_q        <= lane_d;
     lane_col_q    <= lane_col_d;
-    afwd_node_q   <= r3_root_q;
-    afwd_value_q  <= r3_value;
     rfwd_node_q   <= r2_node_q;
     rfwd_root_q   <= r2_root;
-    sweep_tile_q  <= sweep_tile_d;
+    sweep_lane_q  <= sweep_lane_d;
     sweep_label_q <= sweep_label_d;
     r1_node_q     <= r1_node_d;
     r2_node_q     <= r2_node_d;
     r2_self_q     <= r2_self_d;
     r2_parent_q   <= r2_parent_d;
-    r3_node_q     <= r3_node_d;
-    r3_root_q     <= r3_root_d;
+    // R3 .. R6 (the valid bits above): each stage loads under the one before's, so no chain of
+    // shift registers forms
+    if (r2_valid_q) begin
+      r3_root_q <= r2_root;
+      r3_self_q <= r2_self_q;
+    end
+    if (r3_valid_q) begin
+      r4_root_q <= r3_root_q;
+      desc_q    <= desc_rd;
+      m1_q      <= m1_d;
+      old_hit_q <= old_hit_d;
+      old_q     <= old_d;
+    end
+    if (r4_valid_q) begin
+      r5_root_q <= r4_root_q;
+      res_q     <= r4_value;
+    end
+    if (r5_valid_q) begin
+      r6_root_q <= r5_root_q;
+      res2_q    <= res_q;
+    end
     e1_node_q     <= e1_node_d;
+    e2_obj_q      <= e2_obj_d;
     if (frame_end) begin
       emit_tile_ovf_q <= tile_ovf_q;
       emit_err_q      <= err_frame_q;

@@ -11,6 +11,7 @@ module scw_labelling_edge_queue #(
   parameter int unsigned Depth   = 8,
   parameter int unsigned NodeW   = 6,
   parameter int unsigned MaxPush = 2,
+  parameter int unsigned Room    = 0,  // room_o: at most Depth - Room edges queued
   localparam int unsigned PtrW   = $clog2(Depth),
   localparam int unsigned CountW = $clog2(Depth + 1),
   localparam int unsigned PushW  = $clog2(MaxPush + 1)
@@ -22,6 +23,7 @@ module scw_labelling_edge_queue #(
   input  logic [MaxPush*NodeW-1:0] push_a_i,  // push k at [k * NodeW +: NodeW]
   input  logic [MaxPush*NodeW-1:0] push_b_i,
   output logic [CountW-1:0]        count_o,
+  output logic                     room_o,    // count_o <= Depth - Room, from a register
   output logic [NodeW-1:0]         head_a_o,
   output logic [NodeW-1:0]         head_b_o
 );
@@ -33,22 +35,40 @@ module scw_labelling_edge_queue #(
   end
 
   logic [PtrW-1:0] head_q, tail0;
-  logic [CountW-1:0] count_q;
+  logic [CountW-1:0] count_q, count_d;
+  logic room_q, room_d;
   logic [NodeW-1:0] slot_a_q [Depth];
   logic [NodeW-1:0] slot_b_q [Depth];
 
   assign tail0    = head_q + PtrW'(count_q);
   assign count_o  = count_q;
+  assign count_d  = count_q - CountW'(pop_i) + CountW'(push_n_i);
+  assign room_o   = room_q;
   assign head_a_o = slot_a_q[head_q];
   assign head_b_o = slot_b_q[head_q];
+
+  // room_d = count_d <= Depth - Room, compared from count_q for every push count and pop, so
+  // the pop (the union-find's decision this clock) only selects.
+  localparam int Limit = Depth - Room;
+  always_comb begin
+    room_d = 1'b0;
+    for (int p = 0; p <= MaxPush; p++) begin
+      if (PushW'(p) == push_n_i) begin
+        if (pop_i) room_d = (Limit - p + 1 >= 0) && (32'(count_q) <= 32'(Limit - p + 1));
+        else room_d = (Limit - p >= 0) && (32'(count_q) <= 32'(Limit - p));
+      end
+    end
+  end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       head_q  <= '0;
       count_q <= '0;
+      room_q  <= 1'b1;
     end else begin
       if (pop_i) head_q <= head_q + 1'b1;
-      count_q <= count_q - CountW'(pop_i) + CountW'(push_n_i);
+      count_q <= count_d;
+      room_q  <= room_d;
     end
   end
 

@@ -2,18 +2,57 @@
 // Labelling: the descriptor of the union of two disjoint pixel sets (combinational).
 `default_nettype none
 
-// The twin of hls::labelling::merge(): sums wrap as the C++ unsigned sums do, ties in the
-// closest and first points go to the earlier pixel in raster order, so the result is symmetric.
-// A descriptor is the object part of sim/labelling_pack.hpp's output word, area in the low bits.
+// The twin of hls::labelling::merge() on descriptors stored at their fields' widths
+// (hls::labelling::DescWidths; scw_labelling passes the widths, the defaults are a 32 x 24
+// frame's). Ties in the closest and first points go to the earlier pixel in raster order, so the
+// result is symmetric. No sum can overflow its width at the frame size the widths were derived for.
+// Layout, area in the low bits: {m03, m12, m21, m30, m02, m11, m20, m01, m10, first_y, first_x,
+// closest_y, closest_x, d_max, d_min, y_max, y_min, x_max, x_min, area}.
 module scw_labelling_merge #(
-  localparam int unsigned DescW = 32 + 10 * 16 + 9 * 64
+  parameter int unsigned AreaW = 10,
+  parameter int unsigned PosXW = 5,
+  parameter int unsigned PosYW = 5,
+  parameter int unsigned DispW = 15,
+  parameter int unsigned M10W  = 14,
+  parameter int unsigned M01W  = 14,
+  parameter int unsigned M20W  = 18,
+  parameter int unsigned M11W  = 18,
+  parameter int unsigned M02W  = 18,
+  parameter int unsigned M30W  = 23,
+  parameter int unsigned M21W  = 22,
+  parameter int unsigned M12W  = 22,
+  parameter int unsigned M03W  = 22,
+  localparam int unsigned DescW = AreaW + 4 * PosXW + 4 * PosYW + 2 * DispW + M10W + M01W +
+                                  M20W + M11W + M02W + M30W + M21W + M12W + M03W
 ) (
   input  logic [DescW-1:0] a_i,
   input  logic [DescW-1:0] b_i,
   output logic [DescW-1:0] o_o
 );
+  typedef struct packed {
+    logic [M03W-1:0]  m03;
+    logic [M12W-1:0]  m12;
+    logic [M21W-1:0]  m21;
+    logic [M30W-1:0]  m30;
+    logic [M02W-1:0]  m02;
+    logic [M11W-1:0]  m11;
+    logic [M20W-1:0]  m20;
+    logic [M01W-1:0]  m01;
+    logic [M10W-1:0]  m10;
+    logic [PosYW-1:0] first_y;
+    logic [PosXW-1:0] first_x;
+    logic [PosYW-1:0] closest_y;
+    logic [PosXW-1:0] closest_x;
+    logic [DispW-1:0] d_max;
+    logic [DispW-1:0] d_min;
+    logic [PosYW-1:0] y_max;
+    logic [PosYW-1:0] y_min;
+    logic [PosXW-1:0] x_max;
+    logic [PosXW-1:0] x_min;
+    logic [AreaW-1:0] area;
+  } desc_t;
 
-  scw_pkg::label_desc_t a, b, o;
+  desc_t a, b, o;
   logic a_closest, a_first;
 
   assign a = a_i;

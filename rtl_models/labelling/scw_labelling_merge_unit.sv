@@ -10,8 +10,9 @@ module scw_labelling_merge_unit #(
   parameter int unsigned Nodes   = 64,
   parameter int unsigned Depth   = 8,
   parameter int unsigned MaxPush = 2,
+  parameter int unsigned Room    = 0,  // room_o: at most Depth - Room edges queued
   localparam int unsigned NodeW  = (Nodes > 1) ? $clog2(Nodes) : 1,
-  localparam int unsigned N1W    = $clog2(Nodes + 1),  // node + 1, 0 = none
+  localparam int unsigned PW     = NodeW + 1,  // a parent word {linked, parent}
   localparam int unsigned CountW = $clog2(Depth + 1),
   localparam int unsigned PushW  = $clog2(MaxPush + 1)
 ) (
@@ -21,21 +22,27 @@ module scw_labelling_merge_unit #(
   input  logic [PushW-1:0]         push_n_i,  // edges k = 0 .. push_n_i - 1, in order
   input  logic [MaxPush*NodeW-1:0] push_a_i,  // edge k at [k * NodeW +: NodeW]
   input  logic [MaxPush*NodeW-1:0] push_b_i,
-  input  logic [N1W-1:0]           rd_data_i,
+  input  logic [PW-1:0]            rd_data_i,
   output logic [CountW-1:0]        count_o,   // edges queued
+  output logic                     room_o,    // count_o <= Depth - Room (registered)
   output logic                     idle_o,    // no edge in the union-find
   output logic                     rd_en_o,
   output logic [NodeW-1:0]         rd_addr_o,
   output logic                     wr_en_o,
   output logic [NodeW-1:0]         wr_addr_o,
-  output logic [N1W-1:0]           wr_data_o
+  output logic [PW-1:0]            wr_data_o
 );
   logic pop, nonempty;
   logic [NodeW-1:0] head_a, head_b;
 
   assign nonempty = count_o != '0;
 
-  scw_labelling_edge_queue #(.Depth(Depth), .NodeW(NodeW), .MaxPush(MaxPush)) u_edge_queue (
+  scw_labelling_edge_queue #(
+    .Depth  (Depth),
+    .NodeW  (NodeW),
+    .MaxPush(MaxPush),
+    .Room   (Room)
+  ) u_edge_queue (
     .clk_i,
     .rst_ni,
     .pop_i   (pop),
@@ -43,6 +50,7 @@ module scw_labelling_merge_unit #(
     .push_a_i,
     .push_b_i,
     .count_o,
+    .room_o,
     .head_a_o(head_a),
     .head_b_o(head_b)
   );

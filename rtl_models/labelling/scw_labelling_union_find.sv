@@ -2,10 +2,11 @@
 // Labelling: the merge unit, union-find over the parent RAM one queued edge at a time.
 `default_nettype none
 
-// The twin of hls::labelling::UnionFind (docs/labelling.md "Merge unit"). parent[n] = 0: n is a
-// root, else parent[n] - 1 < n; roots link larger under smaller, so a component's root is its
-// smallest node. The parent RAM reads through a register: rd_data_i is the word at the address
-// read in the previous clock.
+// The twin of hls::labelling::UnionFind (docs/labelling.md "Merge unit"). A parent word is
+// {linked, parent}: linked = 0, n is a root; else parent < n (the model's parent + 1, split so
+// that no decrement sits between a read and the next address). Roots link larger under smaller,
+// so a component's root is its smallest node. The parent RAM reads through a register: rd_data_i
+// is the word at the address read in the previous clock.
 //   Idle   pop an edge (a, b), read parent[a]
 //   FindA  follow parent[] from a to its root ra; then read parent[b]
 //   FindB  follow parent[] from b to rb; when found, write parent[max] = min + 1 if ra != rb
@@ -15,7 +16,7 @@
 module scw_labelling_union_find #(
   parameter int unsigned Nodes = 64,
   localparam int unsigned NodeW = (Nodes > 1) ? $clog2(Nodes) : 1,
-  localparam int unsigned N1W   = $clog2(Nodes + 1)  // node + 1, 0 = none
+  localparam int unsigned PW    = NodeW + 1  // a parent word {linked, parent}
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -23,14 +24,14 @@ module scw_labelling_union_find #(
   input  logic             q_nonempty_i,
   input  logic [NodeW-1:0] head_a_i,
   input  logic [NodeW-1:0] head_b_i,
-  input  logic [N1W-1:0]   rd_data_i,
+  input  logic [PW-1:0]    rd_data_i,
   output logic             pop_o,
   output logic             idle_o,
   output logic             rd_en_o,
   output logic [NodeW-1:0] rd_addr_o,
   output logic             wr_en_o,
   output logic [NodeW-1:0] wr_addr_o,
-  output logic [N1W-1:0]   wr_data_o
+  output logic [PW-1:0]    wr_data_o
 );
   typedef enum logic [2:0] {StIdle, StFindA, StFindB, StPathA, StPathB} state_e;
 
@@ -40,8 +41,8 @@ module scw_labelling_union_find #(
   logic at_root;
 
   assign idle_o  = state_q == StIdle;
-  assign at_root = rd_data_i == '0;
-  assign up      = NodeW'(rd_data_i - 1'b1);  // the parent of the node just read
+  assign at_root = !rd_data_i[NodeW];
+  assign up      = rd_data_i[NodeW-1:0];  // the parent of the node just read
   // The two roots of FindB's last clock, ordered.
   assign lo      = (ra_q < cur_q) ? ra_q : cur_q;
   assign hi      = (ra_q < cur_q) ? cur_q : ra_q;
@@ -89,7 +90,7 @@ module scw_labelling_union_find #(
             root_d    = lo;
             wr_en_o   = ra_q != cur_q;
             wr_addr_o = hi;
-            wr_data_o = N1W'(lo) + 1'b1;
+            wr_data_o = {1'b1, lo};
             state_d   = StPathA;
           end else begin
             rd_en_o   = 1'b1;
@@ -100,13 +101,13 @@ module scw_labelling_union_find #(
         StPathA: begin
           wr_en_o   = a_q != root_q;
           wr_addr_o = a_q;
-          wr_data_o = N1W'(root_q) + 1'b1;
+          wr_data_o = {1'b1, root_q};
           state_d   = StPathB;
         end
         StPathB: begin
           wr_en_o   = b_q != root_q;
           wr_addr_o = b_q;
-          wr_data_o = N1W'(root_q) + 1'b1;
+          wr_data_o = {1'b1, root_q};
           state_d   = StIdle;
         end
         default: state_d = StIdle;

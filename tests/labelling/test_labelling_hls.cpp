@@ -187,3 +187,58 @@ TEST_CASE("labelling: broken frames are flagged and the next frame is correct", 
   check_broken_streams<LabellingParams<32, 16, 2, 2, 64, 64>>(grid_config(32, 16, 2, 2, 0, 1),
                                                               nested_u_map(32, 16), 100, 40);
 }
+
+namespace {
+
+/// Whether v needs exactly `bits` bits: it fits, and would not fit in one fewer.
+bool tight(std::uint64_t v, int bits) {
+  return (bits >= 64 || (v >> bits) == 0) && (bits == 1 || (v >> (bits - 1)) != 0);
+}
+
+}  // namespace
+
+TEST_CASE("labelling: the stored widths hold a full 1280 x 480 frame, and need every bit",
+          "[hls]") {
+  using scw::hls::labelling::desc_widths;
+  using scw::hls::labelling::merge;
+  using scw::hls::labelling::narrow;
+  using scw::hls::labelling::pixel_object;
+  constexpr int W = 1280, H = 480;
+  constexpr auto w = desc_widths(W, H);
+  // The bounds written beside the RTL's localparams (scw_labelling.sv).
+  STATIC_REQUIRE(w.area == 20);
+  STATIC_REQUIRE(w.x == 11);
+  STATIC_REQUIRE(w.y == 9);
+  STATIC_REQUIRE(w.total() == 484);
+  // The worst case of every sum: one object of every pixel (every term is non-negative, so no
+  // pixel set has larger sums), at the largest disparity.
+  Object all = pixel_object(0, 0, 0x7fff);
+  for (int v = 0; v < H; ++v)
+    for (int u = v == 0 ? 1 : 0; u < W; ++u) all = merge(all, pixel_object(u, v, 0x7fff));
+  CHECK(narrow(all, w) == all);
+  CHECK(tight(all.area, w.area));
+  CHECK(tight(all.x_max, w.x));
+  CHECK(tight(all.y_max, w.y));
+  CHECK(tight(all.d_max, w.d));
+  const std::uint64_t m[9] = {all.m10, all.m01, all.m20, all.m11, all.m02,
+                              all.m30, all.m21, all.m12, all.m03};
+  for (int i = 0; i < 9; ++i) {
+    INFO("moment " << i);
+    CHECK(tight(m[i], w.m[i]));
+  }
+  // The far corner alone: its coordinates are the largest a field holds.
+  const Object corner = pixel_object(W - 1, H - 1, 0x7fff);
+  CHECK(narrow(corner, w) == corner);
+  // The stage's model through a whole full frame at this size: one object, every bit kept.
+  using Thesis1 = LabellingParams<W, H, 8, 4, 32, 16>;
+  STATIC_REQUIRE(Thesis1::kWidths.total() == 484);
+  DispMap full{"full frame", W, H, std::vector<std::uint16_t>(static_cast<std::size_t>(W) * H, 0x7fff)};
+  LabellingConfig cfg{W, H, W / 8, H / 4, 0, 1};
+  auto model = std::make_unique<scw::sim::LabellingModel<Thesis1>>(cfg);
+  const auto r = run_maps(*model, {full}, cfg, {});
+  REQUIRE_FALSE(r.timed_out);
+  const auto frames = split_frames(r.out);
+  REQUIRE(frames.size() == 1);
+  REQUIRE(frames[0].objects.size() == 1);
+  CHECK(frames[0].objects[0] == all);
+}
