@@ -116,9 +116,12 @@ module scw_disparity #(
   end
 
   // ---- credits ---------------------------------------------------------------------------
-  logic [QCW-1:0] count_q, ready_q;  // results issued and not read; of those, readable
-  logic core_room;
-  assign core_room = (QCW'(Queue) - count_q) >= QCW'(Ppc);
+  // core_room_q is the room for the next beat, registered from the count's next value, so the
+  // writer's ready and everything behind it start at a register rather than at the count's
+  // adder and compare.
+  logic [QCW-1:0] count_q, ready_q, count_d;  // results issued and not read; of those, readable
+  logic core_room, core_room_q;
+  assign core_room = core_room_q;
 
   // ---- writer ----------------------------------------------------------------------------
   logic [ColW-1:0] in_col_q;
@@ -135,10 +138,13 @@ module scw_disparity #(
   assign take        = l_ready_o;
   assign frame_start = (in_col_q == '0) && (in_row_q == '0);
 
+  // The pair written, whatever decides whether it is: a taken pair clears neither skip nor
+  // held, so the data needs no part of the handshake (only the write enable does).
+  assign have_l = skip_q ? '0 : held_q ? held_l_q : l_data_i;
+  assign have_r = skip_q ? '0 : held_q ? held_r_q : r_data_i;
+
   always_comb begin
     have     = 1'b0;
-    have_l   = '0;
-    have_r   = '0;
     held_set = 1'b0;
     held_clr = 1'b0;
     err_in   = 1'b0;
@@ -151,17 +157,13 @@ module scw_disparity #(
         err_in = 1'b1;  // dropped: a frame starts with sof
       end else begin
         if (l_eol_i != (in_col_q == last_col_q)) err_in = 1'b1;
-        have   = 1'b1;
-        have_l = l_data_i;
-        have_r = r_data_i;
+        have = 1'b1;
       end
     end else if (skip_q && input_room) begin
       have = 1'b1;  // the rest of an interrupted frame, as zeros
     end else if (held_q && input_room) begin
       have     = 1'b1;
       held_clr = 1'b1;
-      have_l   = held_l_q;
-      have_r   = held_r_q;
     end
   end
 
@@ -432,6 +434,7 @@ module scw_disparity #(
       head_q      <= '0;
       tail_q      <= '0;
       count_q     <= '0;
+      core_room_q <= 1'b1;
       ready_q     <= '0;
       err_o       <= 1'b0;
     end else begin
@@ -446,11 +449,14 @@ module scw_disparity #(
         end
       end
       tail_q  <= tail_q + QW'(n_in);
-      count_q <= count_q + (issue ? QCW'(n_emit) : '0) - (read ? QCW'(n_out) : '0);
+      count_q     <= count_d;
+      core_room_q <= (QCW'(Queue) - count_d) >= QCW'(Ppc);
       ready_q <= ready_q + QCW'(n_in) - (read ? QCW'(n_out) : '0);
       if (err_in) err_o <= 1'b1;
     end
   end
+
+  assign count_d = count_q + (issue ? QCW'(n_emit) : '0) - (read ? QCW'(n_out) : '0);
 
   always_ff @(posedge clk_i) begin
     if (read) begin
