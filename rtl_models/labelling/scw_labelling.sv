@@ -488,10 +488,15 @@ module scw_labelling #(
         .rd_data_o(rp)
       );
 
-      // B1: the left strip's last pixel and the right strip's first (the later) join.
+      // B1: the left strip's last pixel and the right strip's first (the later) join:
+      // 10 |d_cur - d_nb| < d_cur (hls::labelling::joins), 10 x = 8 x + 2 x.
       logic j;
+      logic [15:0] bdiff;
+      logic [19:0] bten;
       logic [NodeW-1:0] ea, eb;
-      scw_labelling_join u_join (.d_cur_i(rp[15:0]), .d_nb_i(lp[15:0]), .join_o(j));
+      assign bdiff = (rp[15:0] >= lp[15:0]) ? rp[15:0] - lp[15:0] : lp[15:0] - rp[15:0];
+      assign bten  = {1'b0, bdiff, 3'b000} + {3'b000, bdiff, 1'b0};
+      assign j     = bten < {4'b0000, rp[15:0]};
       assign ea        = NodeW'(lp[BordW-1:16] - 1'b1);
       assign eb        = NodeW'(rp[BordW-1:16] - 1'b1);
       assign joined[b] = b1_valid_q && (lp[BordW-1:16] != '0) && (rp[BordW-1:16] != '0) && j;
@@ -593,7 +598,7 @@ module scw_labelling #(
   // R2 reads both; R3 passes them through the RAMs' output registers and chooses R4's
   // forwarding (the sum R4 computes now, or one of the two before, which R2's read missed);
   // R4 adds; R5 writes. A root starts from the empty descriptor, merge()'s identity.
-  logic [DescW-1:0] acc_rd, desc_q, r4_a, r4_value, res_q, res2_q, old_q, old_d, empty;
+  logic [DescW-1:0] acc_rd, desc_q, r4_a, res_q, res2_q, old_q, old_d, empty;
   logic m1_q, m1_d, old_hit_q, old_hit_d, r5_match, r6_match;
 
   // empty: no pixel (area and sums 0, minima at their largest, maxima 0, the first pixel last)
@@ -630,9 +635,11 @@ module scw_labelling #(
     .M12W (M12W),
     .M03W (M03W)
   ) u_merge (
-    .a_i(r4_a),
-    .b_i(desc_q),
-    .o_o(r4_value)
+    .clk_i,
+    .en_i(r4_valid_q),  // R5's sum
+    .a_i (r4_a),
+    .b_i (desc_q),
+    .o_o (res_q)
   );
 
   // ---- the node sweep (Resolve and Emit): used nodes ascending, an empty lane costs a clock -
@@ -957,7 +964,6 @@ module scw_labelling #(
     end
     if (r4_valid_q) begin
       r5_root_q <= r4_root_q;
-      res_q     <= r4_value;
     end
     if (r5_valid_q) begin
       r6_root_q <= r5_root_q;

@@ -24,6 +24,7 @@ module scw_labelling_edge_queue #(
   input  logic [MaxPush*NodeW-1:0] push_b_i,
   output logic [CountW-1:0]        count_o,
   output logic                     room_o,    // count_o <= Depth - Room, from a register
+  output logic                     nonempty_o,  // count_o != 0, from a register
   output logic [NodeW-1:0]         head_a_o,
   output logic [NodeW-1:0]         head_b_o
 );
@@ -34,9 +35,10 @@ module scw_labelling_edge_queue #(
     $error("scw_labelling_edge_queue: 1 .. Depth pushes per clock");
   end
 
-  logic [PtrW-1:0] head_q, tail0;
+  logic [PtrW-1:0] head_q, head_d, tail0;
+  logic [NodeW-1:0] head_a_q, head_b_q, head_a_d, head_b_d;
   logic [CountW-1:0] count_q, count_d;
-  logic room_q, room_d;
+  logic room_q, room_d, nonempty_q;
   logic [NodeW-1:0] slot_a_q [Depth];
   logic [NodeW-1:0] slot_b_q [Depth];
 
@@ -44,8 +46,39 @@ module scw_labelling_edge_queue #(
   assign count_o  = count_q;
   assign count_d  = count_q - CountW'(pop_i) + CountW'(push_n_i);
   assign room_o   = room_q;
-  assign head_a_o = slot_a_q[head_q];
-  assign head_b_o = slot_b_q[head_q];
+  assign nonempty_o = nonempty_q;
+
+  // A copy of count_o != 0 without reset (it follows count_d, which reset holds at 0, from the
+  // first clock): the union-find's first read address follows from it, and an asynchronous
+  // clear-to-output (891 ps in the 7-series cells) would stand in that path's time.
+  always_ff @(posedge clk_i) begin
+    nonempty_q <= count_d != '0;
+  end
+  assign head_d   = head_q + PtrW'(pop_i);
+
+  // The head's edge from a register: the slot the head moves to, or the first push when it is
+  // written there (into an empty queue, or one whose only edge leaves). The union-find reads
+  // its first address from it; the pop, decided late, only selects.
+  logic [PtrW-1:0] head1;
+  logic into0, into1;
+  assign head1 = head_q + 1'b1;
+  assign into0 = (count_q == '0) && (push_n_i != '0);
+  assign into1 = (count_q == CountW'(1)) && (push_n_i != '0);
+  always_comb begin
+    if (pop_i) begin
+      head_a_d = into1 ? push_a_i[NodeW-1:0] : slot_a_q[head1];
+      head_b_d = into1 ? push_b_i[NodeW-1:0] : slot_b_q[head1];
+    end else begin
+      head_a_d = into0 ? push_a_i[NodeW-1:0] : slot_a_q[head_q];
+      head_b_d = into0 ? push_b_i[NodeW-1:0] : slot_b_q[head_q];
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    head_a_q <= head_a_d;
+    head_b_q <= head_b_d;
+  end
+  assign head_a_o = head_a_q;
+  assign head_b_o = head_b_q;
 
   // room_d = count_d <= Depth - Room, compared from count_q for every push count and pop, so
   // the pop (the union-find's decision this clock) only selects.
@@ -66,7 +99,7 @@ module scw_labelling_edge_queue #(
       count_q <= '0;
       room_q  <= 1'b1;
     end else begin
-      if (pop_i) head_q <= head_q + 1'b1;
+      head_q  <= head_d;
       count_q <= count_d;
       room_q  <= room_d;
     end

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// Labelling: the descriptor of the union of two disjoint pixel sets (combinational).
+// Labelling: the descriptor of the union of two disjoint pixel sets, registered.
 `default_nettype none
 
 // The twin of hls::labelling::merge() on descriptors stored at their fields' widths
 // (hls::labelling::DescWidths; scw_labelling passes the widths, the defaults are a 32 x 24
 // frame's). Ties in the closest and first points go to the earlier pixel in raster order, so the
 // result is symmetric. No sum can overflow its width at the frame size the widths were derived for.
+// o_o is the union of the a_i and b_i of the last clock with en_i (a datapath register, no reset).
 // Layout, area in the low bits: {m03, m12, m21, m30, m02, m11, m20, m01, m10, first_y, first_x,
 // closest_y, closest_x, d_max, d_min, y_max, y_min, x_max, x_min, area}.
 module scw_labelling_merge #(
@@ -25,6 +26,8 @@ module scw_labelling_merge #(
   localparam int unsigned DescW = AreaW + 4 * PosXW + 4 * PosYW + 2 * DispW + M10W + M01W +
                                   M20W + M11W + M02W + M30W + M21W + M12W + M03W
 ) (
+  input  logic             clk_i,
+  input  logic             en_i,
   input  logic [DescW-1:0] a_i,
   input  logic [DescW-1:0] b_i,
   output logic [DescW-1:0] o_o
@@ -52,12 +55,16 @@ module scw_labelling_merge #(
     logic [AreaW-1:0] area;
   } desc_t;
 
-  desc_t a, b, o;
+  desc_t a, b, o, o_q;
   logic a_closest, a_first;
 
   assign a = a_i;
   assign b = b_i;
-  assign o_o = o;
+  assign o_o = o_q;
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) o_q <= o;
+  end
 
   always_comb begin
     a_closest = (a.d_max > b.d_max) ||

@@ -35,7 +35,6 @@ module scw_labelling_merge_unit #(
   logic pop, nonempty;
   logic [NodeW-1:0] head_a, head_b;
 
-  assign nonempty = count_o != '0;
 
   scw_labelling_edge_queue #(
     .Depth  (Depth),
@@ -51,24 +50,117 @@ module scw_labelling_merge_unit #(
     .push_b_i,
     .count_o,
     .room_o,
+    .nonempty_o(nonempty),
     .head_a_o(head_a),
     .head_b_o(head_b)
   );
 
-  scw_labelling_union_find #(.Nodes(Nodes)) u_union_find (
-    .clk_i,
-    .rst_ni,
-    .en_i,
-    .q_nonempty_i(nonempty),
-    .head_a_i    (head_a),
-    .head_b_i    (head_b),
-    .rd_data_i,
-    .pop_o       (pop),
-    .idle_o,
-    .rd_en_o,
-    .rd_addr_o,
-    .wr_en_o,
-    .wr_addr_o,
-    .wr_data_o
-  );
+  // ---- the union-find ----------------------------------------------------------------------
+  // parent[n] = {linked, parent}: linked = 0, n is a root; else parent < n (the model's parent +
+  // 1, split so that no decrement sits between a read and the next address). Roots link larger
+  // under smaller, so a component's root is its smallest node. rd_data_i is the word at the
+  // address read in the previous clock.
+  //   Idle   pop an edge (a, b), read parent[a]
+  //   FindA  follow parent[] from a to its root ra; then read parent[b]
+  //   FindB  follow parent[] from b to rb; when found, write parent[max] = min if ra != rb
+  //   PathA  write parent[a] = root unless a is the root (path compression)
+  //   PathB  the same for b
+  // An edge takes depth(a) + depth(b) + 5 clocks. The unit steps only while en_i.
+  typedef enum logic [2:0] {StIdle, StFindA, StFindB, StPathA, StPathB} state_e;
+
+  state_e state_q, state_d;
+  logic [NodeW-1:0] a_q, a_d, b_q, b_d, ra_q, ra_d, root_q, root_d, cur_q, cur_d;
+  logic [NodeW-1:0] up, lo, hi;
+  logic at_root;
+
+  assign idle_o  = state_q == StIdle;
+  assign at_root = !rd_data_i[NodeW];
+  assign up      = rd_data_i[NodeW-1:0];  // the parent of the node just read
+  // The two roots of FindB's last clock, ordered.
+  assign lo      = (ra_q < cur_q) ? ra_q : cur_q;
+  assign hi      = (ra_q < cur_q) ? cur_q : ra_q;
+
+  always_comb begin
+    state_d   = state_q;
+    a_d       = a_q;
+    b_d       = b_q;
+    ra_d      = ra_q;
+    root_d    = root_q;
+    cur_d     = cur_q;
+    pop     = 1'b0;
+    rd_en_o   = 1'b0;
+    rd_addr_o = cur_q;
+    wr_en_o   = 1'b0;
+    wr_addr_o = a_q;
+    wr_data_o = '0;
+    if (en_i) begin
+      unique case (state_q)
+        StIdle: begin
+          if (nonempty) begin
+            pop     = 1'b1;
+            a_d       = head_a;
+            b_d       = head_b;
+            rd_en_o   = 1'b1;
+            rd_addr_o = head_a;
+            cur_d     = head_a;
+            state_d   = StFindA;
+          end
+        end
+        StFindA: begin
+          rd_en_o = 1'b1;
+          if (at_root) begin
+            ra_d      = cur_q;
+            rd_addr_o = b_q;
+            cur_d     = b_q;
+            state_d   = StFindB;
+          end else begin
+            rd_addr_o = up;
+            cur_d     = up;
+          end
+        end
+        StFindB: begin
+          if (at_root) begin
+            root_d    = lo;
+            wr_en_o   = ra_q != cur_q;
+            wr_addr_o = hi;
+            wr_data_o = {1'b1, lo};
+            state_d   = StPathA;
+          end else begin
+            rd_en_o   = 1'b1;
+            rd_addr_o = up;
+            cur_d     = up;
+          end
+        end
+        StPathA: begin
+          wr_en_o   = a_q != root_q;
+          wr_addr_o = a_q;
+          wr_data_o = {1'b1, root_q};
+          state_d   = StPathB;
+        end
+        StPathB: begin
+          wr_en_o   = b_q != root_q;
+          wr_addr_o = b_q;
+          wr_data_o = {1'b1, root_q};
+          state_d   = StIdle;
+        end
+        default: state_d = StIdle;
+      endcase
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      state_q <= StIdle;
+    end else begin
+      state_q <= state_d;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    a_q    <= a_d;
+    b_q    <= b_d;
+    ra_q   <= ra_d;
+    root_q <= root_d;
+    cur_q  <= cur_d;
+  end
 endmodule

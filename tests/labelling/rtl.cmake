@@ -3,8 +3,7 @@
 # labelling/test_labelling_rtl.cpp (which static_asserts the same parameters).
 scw_rtl_model_library(scw_test_rtl_labelling)
 set(_scw_labelling_sv scw_labelling.sv scw_labelling_desc_ram.sv scw_labelling_edge_queue.sv
-    scw_labelling_join.sv scw_labelling_lane.sv scw_labelling_merge.sv
-    scw_labelling_merge_unit.sv scw_labelling_union_find.sv)
+    scw_labelling_lane.sv scw_labelling_merge.sv scw_labelling_merge_unit.sv)
 scw_verilate(scw_test_rtl_labelling TOP scw_labelling PREFIX Vlabelling_a STAGE labelling
              FILES ${_scw_labelling_sv}
              PARAMS MaxWidthPx=32 MaxHeight=24 MaxTilesX=4 MaxTilesY=4 LabelsPerTile=128
