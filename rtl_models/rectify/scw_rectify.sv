@@ -20,7 +20,7 @@
 // Pipeline under one enable (adv = !out_valid || out_ready), Latency = 10:
 //   s0 RAM addresses (two short adds from the map beat), taps' raw coordinates
 //   s1 RAM read; compares of the taps against image and row window
-//   s2 bank registers; per-RAM tap enables and the window error
+//   s2 bank registers; the bank one-hot, zero for a tap that does not count; window error
 //   s3 bank picked, pixel of the word picked, gated: one pixel per RAM
 //   s4 taps by parity, d10 = f10 - f00, d11 = f11 - f01           (DSP A/B registers)
 //   s5 products d fx, C = f S + S/2                                (DSP M/C registers)
@@ -588,7 +588,6 @@ module scw_rectify #(
     // (p ^ o, q ^ k), so the enables are permuted to RAM order here.
     logic any_col, row0, row1, use0, use1;
     logic [3:0] u;  // tap enables, index o * 2 + k
-    logic [3:0] s2_en_q;  // RAM enables, index r * 2 + c
     logic s2_p_q, s2_q_q;
     logic [FracBits-1:0] s2_fx_q, s2_fy_q;
     logic [1:0] s2_sub_q;
@@ -603,11 +602,6 @@ module scw_rectify #(
     always_ff @(posedge clk_i) begin
       if (adv) begin
         s2_winerr_q <= !s1_zero_q && ((row0 && !s1_win0_q) || (row1 && !s1_win1_q));
-        for (int r = 0; r < 2; r++) begin
-          for (int c = 0; c < 2; c++) begin
-            s2_en_q[r*2 + c] <= u[{1'(r) ^ s1_p_q, 1'(c) ^ s1_q_q}];
-          end
-        end
         s2_p_q   <= s1_p_q;
         s2_q_q   <= s1_q_q;
         s2_fx_q  <= s1_fx_q;
@@ -617,13 +611,18 @@ module scw_rectify #(
     end
 
     // -- RAMs (r, c) at index r * 2 + c; s3: bank and pixel picked, gated ------------------------
+    // The bank is kept one-hot from s2 on, and all-zero when the RAM's tap does not contribute,
+    // so the pick is an AND-OR of registers and the gating comes free.
     logic [4*PixW-1:0] s3_px;  // s3 registers, one per RAM
     for (genvar r = 0; r < 2; r++) begin : gen_r
       for (genvar c = 0; c < 2; c++) begin : gen_c
         logic [AddrW-1:0] addr_q;
-        logic [BankW-1:0] bank1_q, bank2_q;
+        logic [BankW-1:0] bank1_q;
+        logic [Banks-1:0] bank2_q;  // one-hot, zero for a tap that does not contribute
         logic [Banks*WordW-1:0] bword_q;  // s2: every bank's word
         logic [WordW-1:0] picked;
+        logic en;
+        assign en = u[{1'(r) ^ s1_p_q, 1'(c) ^ s1_q_q}];
         always_ff @(posedge clk_i) begin
           if (adv) begin
             addr_q <= {(c == 0) ? xp1[1+QW +: CwW] : x0i[1+QW +: CwW],
@@ -632,14 +631,15 @@ module scw_rectify #(
         end
         if (Banks > 1) begin : gen_bank_sel
           always_ff @(posedge clk_i) begin
-            if (adv) begin
-              bank1_q <= addr_q[AddrW-1:BankAW];
-              bank2_q <= bank1_q;
-            end
+            if (adv) bank1_q <= addr_q[AddrW-1:BankAW];
           end
         end else begin : gen_bank_one
           assign bank1_q = '0;
-          assign bank2_q = '0;
+        end
+        always_ff @(posedge clk_i) begin
+          if (adv) begin
+            for (int b = 0; b < Banks; b++) bank2_q[b] <= en && (bank1_q == BankW'(b));
+          end
         end
         for (genvar b = 0; b < Banks; b++) begin : gen_bank
           localparam int unsigned BD  = (Depth - b * BankD < BankD) ? Depth - b * BankD : BankD;
@@ -664,7 +664,7 @@ module scw_rectify #(
         always_comb begin
           picked = '0;
           for (int b = 0; b < Banks; b++) begin
-            if (bank2_q == BankW'(b)) picked = bword_q[b*WordW +: WordW];
+            picked = picked | (bword_q[b*WordW +: WordW] & {WordW{bank2_q[b]}});
           end
         end
         logic [PixW-1:0] pix, px_q;
@@ -674,7 +674,7 @@ module scw_rectify #(
           assign pix = picked;
         end
         always_ff @(posedge clk_i) begin
-          if (adv) px_q <= s2_en_q[r*2 + c] ? pix : '0;
+          if (adv) px_q <= pix;
         end
         assign s3_px[(r*2 + c)*PixW +: PixW] = px_q;
         logic unused_ram;
