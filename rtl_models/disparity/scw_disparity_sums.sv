@@ -68,6 +68,7 @@ module scw_disparity_sums #(
   /* verilator lint_on UNUSEDPARAM */
   localparam int unsigned LbDepth = Slots * Cols;
   localparam int unsigned LbAW    = $clog2(LbDepth);
+  localparam int unsigned LbSlice = (LbAW >= 15) ? 1 : (32768 >> LbAW);  // bits a slice
   localparam int unsigned PpcLog  = (Ppc > 1) ? $clog2(Ppc) : 1;
   localparam int unsigned HistPx  = NumDisp - 1;     // right pixels kept from earlier beats
   localparam int unsigned WinPx   = NumDisp + Ppc - 1;  // candidate window of a beat
@@ -106,14 +107,20 @@ module scw_disparity_sums #(
   assign old_back_addr = LbAW'(old_slot) * LbAW'(Cols) + LbAW'(col_back);
 
   logic [BeatW-1:0] lold_rd, rold_rd, rdel_rd;
-  scw_ram_sdp #(.Width(BeatW), .Depth(LbDepth)) u_left_rows (
-    .clk_i, .wr_en_i(valid_i), .wr_addr_i(wr_addr), .wr_data_i(left_i),
-    .rd_en_i(valid_i), .rd_addr_i(old_addr), .rd_data_o(lold_rd)
-  );
-  scw_ram_sdp #(.Width(BeatW), .Depth(LbDepth)) u_right_rows (
-    .clk_i, .wr_en_i(valid_i), .wr_addr_i(wr_addr), .wr_data_i(right_i),
-    .rd_en_i(valid_i), .rd_addr_i(old_back_addr), .rd_data_o(rold_rd)
-  );
+  // The line buffers are cut into bit slices of LbSlice bits, each as deep as a block RAM of
+  // that width (32K x 1, 16K x 2, 8K x 4, ...): every slice is one RAM deep, so no output
+  // multiplexer sits between a block RAM's output and its register.
+  for (genvar b = 0; b < BeatW; b += LbSlice) begin : gen_lb
+    localparam int unsigned SW = (BeatW - b < LbSlice) ? BeatW - b : LbSlice;
+    scw_ram_sdp #(.Width(SW), .Depth(LbDepth)) u_left_rows (
+      .clk_i, .wr_en_i(valid_i), .wr_addr_i(wr_addr), .wr_data_i(left_i[b +: SW]),
+      .rd_en_i(valid_i), .rd_addr_i(old_addr), .rd_data_o(lold_rd[b +: SW])
+    );
+    scw_ram_sdp #(.Width(SW), .Depth(LbDepth)) u_right_rows (
+      .clk_i, .wr_en_i(valid_i), .wr_addr_i(wr_addr), .wr_data_i(right_i[b +: SW]),
+      .rd_en_i(valid_i), .rd_addr_i(old_back_addr), .rd_data_o(rold_rd[b +: SW])
+    );
+  end
   // The new row's right pixels dmin back: written k >= 1 beats ago (k = 0 bypasses it).
   scw_ram_sdp #(.Width(BeatW), .Depth(Cols)) u_right_delay (
     .clk_i, .wr_en_i(valid_i), .wr_addr_i(col_i), .wr_data_i(right_i),
