@@ -84,7 +84,8 @@ class Labelling {
   /// border RAMs (a row per clock), the strips' measure (a tile column per clock) and the lanes'
   /// powers of their first columns (the RTL's running moments, 8 clocks after the measure).
   static constexpr int kInitClocks =
-      N == 1 ? kNodes : std::max({kNodes / N, Params::kMaxHeight, Params::kMaxTilesX + 8});
+      N == 1 ? kNodes
+             : std::max({Params::kLaneStride, Params::kMaxHeight, Params::kMaxTilesX + 8});
   /// The border sweep's queue: it reads a row while it has room for two rows' edges.
   static constexpr int kBorderQueue = 8;
   using in_type = typename Params::in_beat;
@@ -360,7 +361,7 @@ class Labelling {
     const int count = resolve ? ram_.count[t] : emit_count_[t];
     if (resolve) emit_count_[t] = count;
     const bool yields = count > 0;
-    node = t * Params::kLaneNodes + sweep_.label;
+    node = t * Params::kLaneStride + sweep_.label;
     if (yields && sweep_.label + 1 < count) {
       ++sweep_.label;
     } else {
@@ -492,8 +493,8 @@ class Labelling {
   RootFwd rfwd_;
   // RAMs and their read registers.
   LabellingRams<Params> ram_;
-  std::array<int, kNodes> root_ram_{};
-  std::array<Object, kNodes> acc_{};
+  std::array<int, Params::kNodeSpace> root_ram_{};
+  std::array<Object, Params::kNodeSpace> acc_{};
   Reads rd_;
   // Output register.
   bool out_valid_ = false;

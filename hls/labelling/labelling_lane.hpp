@@ -27,11 +27,11 @@ struct BorderPixel {
 };
 
 /// The stage's RAMs and registers that every lane writes in its own bank (a lane's nodes and
-/// rows) and the end-of-frame phases read across banks. Lane i's nodes are i * kLaneNodes on.
+/// rows) and the end-of-frame phases read across banks. Lane i's nodes are i * kLaneStride on.
 template <typename Params>
 struct LabellingRams {
-  std::array<int, Params::kNodes> parent{};    // 0: a root; else parent + 1 (a smaller node)
-  std::array<Object, Params::kNodes> desc{};   // each node's pixels
+  std::array<int, Params::kNodeSpace> parent{};   // 0: a root; else parent + 1 (a smaller node)
+  std::array<Object, Params::kNodeSpace> desc{};  // each node's pixels
   std::array<int, Params::kLanes> count{};     // labels used per lane (registers)
   // Per lane: its strip's first (left) and last (right) pixel of every row.
   std::array<std::array<BorderPixel, Params::kMaxHeight>, Params::kLanes> left{}, right{};
@@ -39,7 +39,7 @@ struct LabellingRams {
 };
 
 /// Lane `index` of `Params::kLanes`: columns x0 .. x0 + width - 1 of the image, global tile
-/// columns from index * kLaneTilesX; nodes index * kLaneNodes .. (index + 1) * kLaneNodes - 1.
+/// columns from index * kLaneTilesX; nodes index * kLaneStride .. + kLaneNodes - 1.
 template <typename Params>
 class LabellingLane {
  public:
@@ -172,7 +172,7 @@ class LabellingLane {
     } else if (ju && p.up_same) {
       node1 = up_node1;
     } else if (count < Params::kLaneNodes) {
-      node1 = index_ * Params::kLaneNodes + count + 1;
+      node1 = index_ * Params::kLaneStride + count + 1;
       ++count;
       alloc = true;
     } else {

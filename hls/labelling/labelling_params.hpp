@@ -13,6 +13,13 @@ namespace scw::hls::labelling {
 /// One input disparity, Q11.4 in 16 bits as the disparity stage emits it.
 using disp_t = std::uint16_t;
 
+/// The smallest power of two >= n (n >= 1).
+constexpr int pow2_at_least(int n) {
+  int p = 1;
+  while (p < n) p *= 2;
+  return p;
+}
+
 /// Wide enough for S_3(65535) S_0(65535) (about 2^78).
 __extension__ typedef unsigned __int128 u128;
 
@@ -87,10 +94,14 @@ struct LabellingParams {
   static constexpr int kLabelsPerTile = LabelsPerTile;
   static constexpr int kMaxObjects = MaxObjects;
   static constexpr int kLanes = Lanes;
-  /// Nodes: the labels of a frame. Lane i numbers its own from i * kLaneNodes up, in the order
-  /// its pixels need them.
+  /// Nodes: the labels of a frame, kLaneNodes a lane. Lane i numbers its own from
+  /// i * kLaneStride up, in the order its pixels need them; with lanes the stride is a power of
+  /// two, so that a node's lane and its address in the lane's banks are bit fields of its number
+  /// (node numbers then run below kNodeSpace, with gaps).
   static constexpr int kNodes = MaxTilesX * MaxTilesY * LabelsPerTile;
   static constexpr int kLaneNodes = kNodes / Lanes;
+  static constexpr int kLaneStride = Lanes == 1 ? kLaneNodes : pow2_at_least(kLaneNodes);
+  static constexpr int kNodeSpace = Lanes * kLaneStride;
   /// Each lane's row buffer holds a strip of up to this many pixels, of up to this many tile
   /// columns; its input FIFO holds this many beats, enough that a strip's burst of beats
   /// (arriving Lanes times faster than the lane takes them) never holds the stream.

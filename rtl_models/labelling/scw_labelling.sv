@@ -10,7 +10,7 @@
 //   Init     after reset: clear the parent RAM (a bank per lane side by side), with lanes also
 //            the strip-border RAMs, and measure the strips (tile_w x tile columns / Lanes)
 //   Frame    one lane: S0 takes the pixel, S1 decides its node (a new one from the lane's pool
-//            of LaneNodes: lane i's are i * LaneNodes on) and queues edges, S2 .. S4 add it to
+//            of LaneNodes: lane i's are i * LaneStride on) and queues edges, P4 .. P6 add it to
 //            its node's descriptor, the merge unit (union-find) runs alongside. Lanes: a beat goes whole into
 //            the FIFO of the lane whose strip it is in; every lane does the same on its strip
 //   Drain    after the frame's last beat or a sof in mid-frame: wait for the lanes
@@ -71,10 +71,14 @@ module scw_labelling #(
   localparam int unsigned LaneFifo /*verilator public*/ =
       (LaneWidthPx / Lanes > 2) ? LaneWidthPx / Lanes : 2;
   localparam int unsigned LaneNodes = Nodes / Lanes;
+  // LabellingParams::kLaneStride, kNodeSpace: with lanes a lane's nodes start at a power of two,
+  // so that its number and a node's address in its banks are bit fields of the node.
+  localparam int unsigned LaneStride = (Lanes == 1) ? LaneNodes : (1 << $clog2(LaneNodes));
+  localparam int unsigned NodeSpace = Lanes * LaneStride;
   // Labelling::kInitClocks: the parent banks side by side; with lanes also the border RAMs (a row
   // per clock), the strip measure (a tile column per clock) and the lanes' first columns'
   // powers (scw_labelling_lane, 8 clocks after the measure).
-  localparam int unsigned InitMax = (LaneNodes > MaxHeight) ? LaneNodes : MaxHeight;
+  localparam int unsigned InitMax = (LaneStride > MaxHeight) ? LaneStride : MaxHeight;
   localparam int unsigned InitClocks /*verilator public*/ =
       (Lanes == 1) ? Nodes : (InitMax > MaxTilesX + 8 ? InitMax : MaxTilesX + 8);
   // Labelling::kBorderQueue: the border sweep reads a row while two rows' edges fit.
@@ -122,17 +126,17 @@ module scw_labelling #(
   localparam int unsigned XW     = $clog2(MaxWidthPx);       // 0 .. MaxWidthPx - 1
   localparam int unsigned YW     = $clog2(MaxHeight + 1);    // 0 .. MaxHeight
   localparam int unsigned HW     = (MaxHeight > 1) ? $clog2(MaxHeight) : 1;  // a border row
-  localparam int unsigned LabW   = (LaneNodes > 1) ? $clog2(LaneNodes) : 1;  // a lane's node
+  localparam int unsigned LabW   = (LaneStride > 1) ? $clog2(LaneStride) : 1;  // a lane's node
   localparam int unsigned CntW   = $clog2(LaneNodes + 1);
-  localparam int unsigned NodeW  = (Nodes > 1) ? $clog2(Nodes) : 1;
-  localparam int unsigned N1W    = $clog2(Nodes + 1);         // node + 1, 0 = none
+  localparam int unsigned NodeW  = (NodeSpace > 1) ? $clog2(NodeSpace) : 1;
+  localparam int unsigned N1W    = $clog2(NodeSpace + 1);     // node + 1, 0 = none
   localparam int unsigned PW     = NodeW + 1;                 // parent word {linked, parent}
-  localparam int unsigned LNodeW = (LaneNodes > 1) ? $clog2(LaneNodes) : 1;
+  localparam int unsigned LNodeW = (LaneStride > 1) ? $clog2(LaneStride) : 1;
   localparam int unsigned ObjW   = $clog2(MaxObjects + 1);
   localparam int unsigned InitW  = (InitClocks > 1) ? $clog2(InitClocks) : 1;
   localparam int unsigned LaneSW = (Lanes > 1) ? $clog2(Lanes) : 1;  // a lane number
   localparam int unsigned BordW  = N1W + 16;                 // border word {node + 1, d}
-  localparam logic [N1W-1:0] LaneNodesN1 = N1W'(LaneNodes);
+  localparam logic [N1W-1:0] LaneStrideN1 = N1W'(LaneStride);
   localparam logic [16:0] Ppb = 17'(Lanes);                   // pixels per beat
 
   if (MaxWidthPx < 2 || MaxHeight < 1 || MaxWidthPx > 65535 || MaxHeight > 65535)
@@ -154,7 +158,7 @@ module scw_labelling #(
   phase_e phase_q, phase_d;
   logic [InitW-1:0] init_q;
   // frame position (of the next beat) and flags
-  logic in_frame_q, in_frame_d;
+  logic in_frame_q, in_frame_d, in_frame;  // in_frame: in_frame_q's copy without reset
   logic [XW-1:0] x_q, x_d, lane_col_q, lane_col_d;
   logic [YW-1:0] y_q, y_d;
   logic [LaneSW-1:0] lane_q, lane_d;
@@ -185,12 +189,18 @@ module scw_labelling #(
   logic [OutW-1:0] out_data_q, out_data_d;
 
   // ---- phases ------------------------------------------------------------------------------
+  // One flag a phase, decoded from phase_d into registers without reset (reset holds phase_d at
+  // PhInit, so they equal phase_q's decode from the first clock): they steer the RAM ports and
+  // the lanes, and an asynchronous clear-to-output (891 ps) would stand in those paths' time.
   logic ph_init, ph_frame, ph_pixels, ph_border, ph_resolve;
-  assign ph_init    = phase_q == PhInit;
-  assign ph_frame   = phase_q == PhFrame;
-  assign ph_pixels  = (phase_q == PhFrame) || (phase_q == PhDrain);
-  assign ph_border  = phase_q == PhBorder;
-  assign ph_resolve = phase_q == PhResolve;
+  always_ff @(posedge clk_i) begin
+    in_frame   <= in_frame_d;  // (reset holds in_frame_d at 0 too: no beat comes in PhInit)
+    ph_init    <= phase_d == PhInit;
+    ph_frame   <= phase_d == PhFrame;
+    ph_pixels  <= (phase_d == PhFrame) || (phase_d == PhDrain);
+    ph_border  <= phase_d == PhBorder;
+    ph_resolve <= phase_d == PhResolve;
+  end
   logic drained;
 
   // ---- the stage's ports into the lanes' banks (Init, Border, Resolve) ---------------------
@@ -221,13 +231,13 @@ module scw_labelling #(
   logic x_wrap;
   logic [Lanes-1:0] fifo_ready, fifo_valid;
 
-  assign room        = (Lanes == 1) ? lane_can_take[0] : fifo_ready[in_frame_q ? lane_q : '0];
-  assign in_ready_o  = ph_frame && room && !(in_frame_q && in_sof_i);
+  assign room        = (Lanes == 1) ? lane_can_take[0] : fifo_ready[in_frame ? lane_q : '0];
+  assign in_ready_o  = ph_frame && room && !(in_frame && in_sof_i);
   assign take        = in_valid_i && in_ready_o;
-  assign sof_mid     = ph_frame && in_frame_q && in_valid_i && in_sof_i;
-  assign frame_start = take && !in_frame_q && in_sof_i;
-  assign beat_drop   = take && !in_frame_q && !in_sof_i;  // outside any frame
-  assign beat_in     = take && (in_frame_q || in_sof_i);  // a beat of the frame
+  assign sof_mid     = ph_frame && in_frame && in_valid_i && in_sof_i;
+  assign frame_start = take && !in_frame && in_sof_i;
+  assign beat_drop   = take && !in_frame && !in_sof_i;  // outside any frame
+  assign beat_in     = take && (in_frame || in_sof_i);  // a beat of the frame
 
   // The beat's position: a sof restarts the counters. Whether the beat ends its row, the frame or
   // its lane's strip is compared from the registers for both cases, so that the choice by
@@ -240,12 +250,19 @@ module scw_labelling #(
   assign xn        = xe + XW'(Lanes);  // (only taken when the row goes on: no wrap)
   assign lane_coln = lane_cole + XW'(Lanes);
   assign y1        = ye + 1'b1;
-  assign x_wrap_cont     = 17'(x_q) + Ppb == {1'b0, cfg_width_i};
-  assign x_wrap_start    = Ppb == {1'b0, cfg_width_i};
-  assign y_last_cont     = 17'(y_q) + 17'd1 == {1'b0, cfg_height_i};
-  assign y_last_start    = cfg_height_i == 16'd1;
-  assign strip_end_cont  = 17'(lane_col_q) + Ppb == {1'b0, strip_q};
-  assign strip_end_start = Ppb == {1'b0, strip_q};
+  // (against the configuration's last positions, registered: static while frames stream)
+  logic [16:0] w_last_q, h_last_q, s_last_q;
+  always_ff @(posedge clk_i) begin
+    w_last_q <= {1'b0, cfg_width_i} - Ppb;
+    h_last_q <= {1'b0, cfg_height_i} - 17'd1;
+    s_last_q <= {1'b0, strip_q} - Ppb;
+  end
+  assign x_wrap_cont     = 17'(x_q) == w_last_q;
+  assign x_wrap_start    = w_last_q == '0;
+  assign y_last_cont     = 17'(y_q) == h_last_q;
+  assign y_last_start    = h_last_q == '0;
+  assign strip_end_cont  = 17'(lane_col_q) == s_last_q;
+  assign strip_end_start = s_last_q == '0;
   assign x_wrap     = frame_start ? x_wrap_start : x_wrap_cont;
   assign frame_last = beat_in && x_wrap && (frame_start ? y_last_start : y_last_cont);
   assign eol_err    = beat_in && (in_eol_i != x_wrap);
@@ -370,7 +387,7 @@ module scw_labelling #(
       .right_we_o   (lane_right_we[i]),
       .border_row_o (lane_brow[i*YW +: YW]),
       .border_word_o(lane_bword[i*BordW +: BordW]),
-      .init_i       (ph_init && (32'(init_q) < 32'(LaneNodes))),
+      .init_i       (ph_init && (32'(init_q) < 32'(LaneStride))),
       .init_addr_i  (LNodeW'(init_q)),
       .par_re_i     (par_re),
       .par_raddr_i  (par_raddr),
@@ -540,7 +557,7 @@ module scw_labelling #(
     end
 
     scw_labelling_merge_unit #(
-      .Nodes  (Nodes),
+      .Nodes  (NodeSpace),
       .Depth  (BorderQueue),
       .MaxPush(Borders),
       .Room   (2 * Borders)
@@ -650,7 +667,7 @@ module scw_labelling #(
 
   assign sw_cnt    = ph_resolve ? sw_count : emit_cnt_q[sweep_lane_q];
   assign sw_yields = sweep_active_q && (sw_cnt != '0);
-  assign sw_node   = NodeW'(N1W'(sweep_lane_q) * LaneNodesN1 + N1W'(sweep_label_q));
+  assign sw_node   = NodeW'(N1W'(sweep_lane_q) * LaneStrideN1 + N1W'(sweep_label_q));
 
   always_comb begin
     sweep_active_d = sweep_active_q;
@@ -857,8 +874,8 @@ module scw_labelling #(
   // Roots and big flags (the root's area reached cfg_min_area_i, written with each sum, so the
   // last write, the root's whole area, decides) in distributed RAM: Resolve's next read address
   // and Emit's decision follow from their words a clock after the read.
-  (* ram_style = "distributed" *) logic [NodeW-1:0] root_mem_q [Nodes];
-  (* ram_style = "distributed" *) logic big_mem_q [Nodes];
+  (* ram_style = "distributed" *) logic [NodeW-1:0] root_mem_q [NodeSpace];
+  (* ram_style = "distributed" *) logic big_mem_q [NodeSpace];
   always_ff @(posedge clk_i) begin
     if (root_we) root_mem_q[r2_node_q] <= r2_root;
     if (acc_we) big_mem_q[r5_root_q] <= 32'(res_q[AreaW-1:0]) >= cfg_min_area_i;
@@ -868,7 +885,7 @@ module scw_labelling #(
     if (emit_read) big_rd <= big_mem_q[sw_node];
   end
 
-  scw_labelling_desc_ram #(.DescW(DescW), .Depth(Nodes), .OutReg(1'b1)) u_acc_ram (
+  scw_labelling_desc_ram #(.DescW(DescW), .Depth(NodeSpace), .OutReg(1'b1)) u_acc_ram (
     .clk_i,
     .wr_en_i  (acc_we),
     .wr_addr_i(r5_root_q),

@@ -20,9 +20,9 @@
 // differences: additions only, no multiplier on the pixel path). A strip of 2 or 3 pixels has
 // its upper neighbour still in P3 .. P6 when P0 reads the row buffer: P2 and P3 take it from the
 // last pixels' registers instead.
-// Nodes are the stage's global numbers: lane i draws its nodes from i * LaneNodes up, in the
+// Nodes are the stage's global numbers: lane i draws its nodes from i * LaneStride up, in the
 // order its pixels need them, and keeps their parents and descriptors in its own banks, addressed
-// by node - i * LaneNodes. While !en_i (Init, Border, Resolve) the stage reaches the banks
+// by node - i * LaneStride (a power of two with lanes: the low bits). While !en_i (Init, Border, Resolve) the stage reaches the banks
 // through the par_* and desc_* ports.
 module scw_labelling_lane #(
   parameter int unsigned MaxWidthPx    = 32,
@@ -51,10 +51,12 @@ module scw_labelling_lane #(
   parameter int unsigned M03W  = 22,
   localparam int unsigned Nodes      = MaxTilesX * MaxTilesY * LabelsPerTile,
   localparam int unsigned LaneNodes  = Nodes / Lanes,
-  localparam int unsigned NodeW      = (Nodes > 1) ? $clog2(Nodes) : 1,
-  localparam int unsigned N1W        = $clog2(Nodes + 1),  // node + 1, 0 = none
+  localparam int unsigned LaneStride = (Lanes == 1) ? LaneNodes : (1 << $clog2(LaneNodes)),
+  localparam int unsigned NodeSpace  = Lanes * LaneStride,  // node numbers (see scw_labelling)
+  localparam int unsigned NodeW      = (NodeSpace > 1) ? $clog2(NodeSpace) : 1,
+  localparam int unsigned N1W        = $clog2(NodeSpace + 1),  // node + 1, 0 = none
   localparam int unsigned PW         = NodeW + 1,  // a parent word {linked, parent}
-  localparam int unsigned LNodeW     = (LaneNodes > 1) ? $clog2(LaneNodes) : 1,
+  localparam int unsigned LNodeW     = (LaneStride > 1) ? $clog2(LaneStride) : 1,
   localparam int unsigned CntW       = $clog2(LaneNodes + 1),
   localparam int unsigned YW         = $clog2(MaxHeight + 1),
   localparam int unsigned DescW      = AreaW + 4 * PosXW + 4 * PosYW + 2 * DispW + M10W + M01W +
@@ -98,15 +100,16 @@ module scw_labelling_lane #(
   localparam int unsigned LaneWidthPx = MaxWidthPx / Lanes;
   localparam int unsigned XW     = (LaneWidthPx > 1) ? $clog2(LaneWidthPx) : 1;
   localparam int unsigned QCntW  = $clog2(EdgeQueue + 1);
-  localparam logic [NodeW-1:0] First = NodeW'(Lane * LaneNodes);  // the lane's first node
+  localparam logic [NodeW-1:0] First = NodeW'(Lane * LaneStride);  // the lane's first node
 
   // A global node's address in the lane's banks, and whether it is this lane's.
+  /* verilator lint_off UNUSEDSIGNAL */  // the lane bits above LNodeW
   function automatic logic [LNodeW-1:0] to_local(input logic [NodeW-1:0] g);
-    to_local = LNodeW'(g - First);
+    to_local = LNodeW'(g);  // (with lanes First is a multiple of 2^LNodeW)
   endfunction
+  /* verilator lint_on UNUSEDSIGNAL */
   function automatic logic owns(input logic [NodeW-1:0] g);
-    owns = (Lanes == 1) || ((33'(g) + 33'd1 > 33'(Lane * LaneNodes)) &&
-                            (33'(g) < 33'((Lane + 1) * LaneNodes)));
+    owns = (Lanes == 1) || ((32'(g) >> LNodeW) == Lane);
   endfunction
 
   // ---- registers ---------------------------------------------------------------------------
@@ -167,7 +170,7 @@ module scw_labelling_lane #(
 
 
   scw_labelling_merge_unit #(
-    .Nodes  (Nodes),
+    .Nodes  (NodeSpace),
     .Depth  (EdgeQueue),
     .MaxPush(2),
     .Room   (TakeRoom)
@@ -588,7 +591,7 @@ module scw_labelling_lane #(
 
   // The parent bank in distributed RAM: the union-find's next address follows from the word
   // read the clock before, which a block RAM's 2.5 ns clock-to-output leaves no time for.
-  (* ram_style = "distributed" *) logic [PW-1:0] par_mem_q [LaneNodes];
+  (* ram_style = "distributed" *) logic [PW-1:0] par_mem_q [LaneStride];
   always_ff @(posedge clk_i) begin
     if (par_we) par_mem_q[par_waddr] <= par_wdata;
   end
@@ -596,7 +599,7 @@ module scw_labelling_lane #(
     if (par_re) par_rd <= par_mem_q[par_raddr];
   end
 
-  scw_labelling_desc_ram #(.DescW(DescW), .Depth(LaneNodes)) u_desc_ram (
+  scw_labelling_desc_ram #(.DescW(DescW), .Depth(LaneStride)) u_desc_ram (
     .clk_i,
     .wr_en_i  (en_i && a6_valid_q),
     .wr_addr_i(a6_node_q),
@@ -700,7 +703,7 @@ module scw_labelling_lane #(
       p3_d10_q       <= p2_d10_q;
       p3_up1_q       <= up1_ram;
       p3_up_nz_q     <= up1_ram != '0;
-      p3_up_a_q      <= LNodeW'(up1_ram - N1W'(First) - 1'b1);
+      p3_up_a_q      <= LNodeW'(up1_ram - 1'b1);  // (First is a multiple of 2^LNodeW)
     end
     // an edge for each joined neighbour whose node is not the pixel's (a new node is no one's)
     p4_want0_q     <= jl && !use_left && (alloc || (use_up && !eq_ul));

@@ -69,6 +69,9 @@ module scw_labelling_merge_unit #(
   typedef enum logic [2:0] {StIdle, StFindA, StFindB, StPathA, StPathB} state_e;
 
   state_e state_q, state_d;
+  // the state's decodes the read port follows, as registers without reset (reset holds state_d at
+  // StIdle, so they equal state_q's decode from the first clock; see the edge queue's nonempty)
+  logic s_idle_q, s_finda_q, s_findb_q;
   logic [NodeW-1:0] a_q, a_d, b_q, b_d, ra_q, ra_d, root_q, root_d, cur_q, cur_d;
   logic [NodeW-1:0] up, lo, hi;
   logic at_root;
@@ -146,6 +149,15 @@ module scw_labelling_merge_unit #(
         default: state_d = StIdle;
       endcase
     end
+    // The read port again, from the registered decodes: the same reads, a shorter path.
+    rd_en_o   = en_i && ((s_idle_q && nonempty) || s_finda_q || (s_findb_q && !at_root));
+    rd_addr_o = s_idle_q ? head_a : ((s_finda_q && at_root) ? b_q : up);
+  end
+
+  always_ff @(posedge clk_i) begin
+    s_idle_q  <= state_d == StIdle;
+    s_finda_q <= state_d == StFindA;
+    s_findb_q <= state_d == StFindB;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
