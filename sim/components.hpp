@@ -97,6 +97,31 @@ class Sink : public Component {
   std::vector<T> beats_;
 };
 
+/// Copies every beat of one FIFO into two, in lockstep: a beat leaves when both have room (the
+/// twin of the fork in rtl_models/pipeline/scw_pipeline.sv, whose two readies are FIFO flags).
+template <typename T>
+class Fork : public Component {
+ public:
+  Fork(std::string name, Fifo<T>& in, Fifo<T>& a, Fifo<T>& b)
+      : Component(std::move(name)), in_(in), a_(a), b_(b) {
+    connect_in(in_);
+    connect_out(a_);
+    connect_out(b_);
+  }
+  void eval() override {
+    if (!in_.can_pop() || !a_.can_push() || !b_.can_push()) return;
+    a_.push(in_.front());
+    b_.push(in_.front());
+    in_.pop();
+  }
+  void tick() override {}
+
+ private:
+  Fifo<T>& in_;
+  Fifo<T>& a_;
+  Fifo<T>& b_;
+};
+
 /// Puts a source-shaped model in front of a FIFO, running whenever `run` says (default:
 /// always), e.g. the map expander feeding a rectify stage's map FIFO.
 template <typename Model>

@@ -92,6 +92,10 @@ class PipelineChain {
     rect_r_ = &sim_.fifo<raw_beat>("rect_right", d.rect);
     disp_ = &sim_.fifo<disp_beat>("disparity", d.disp);
     objects_ = &sim_.fifo<hls::labelling::LabelPacket>("objects", d.obj);
+    // The object words go to the warning stage and, in lockstep, out as the object table.
+    warning_in_ = &sim_.fifo<hls::labelling::LabelPacket>("objects_warning", d.obj);
+    table_ = &sim_.fifo<hls::labelling::LabelPacket>("object_table", d.obj);
+    sim_.add<Fork<hls::labelling::LabelPacket>>("object_fork", *objects_, *warning_in_, *table_);
     auto& res = sim_.fifo<hls::warning::ResultPacket>("frame_result", d.res);
     out_ = &sim_.fifo<Result>("result", d.res);
 
@@ -118,12 +122,13 @@ class PipelineChain {
     start_ = sim_.cycle();
     running_ = true;
 
-    StallPattern in_r = in;
-    in_r.seed = in.seed * 7919 + 17;
     src_l_ = &sim_.add<Source<raw_beat>>("input_left", raw_l, std::move(left), in);
-    src_r_ = &sim_.add<Source<raw_beat>>("input_right", raw_r, std::move(right), in_r);
+    src_r_ = &sim_.add<Source<raw_beat>>("input_right", raw_r, std::move(right),
+                                         in.other_stream(kRightInputSalt));
     // The ends join after the knots are in, so their stall patterns start at cycle 0.
     sink_ = &sim_.add<Sink<Result>>("sink", *out_, out);
+    table_sink_ = &sim_.add<Sink<hls::labelling::LabelPacket>>("table_sink", *table_,
+                                                                out.other_stream(kObjectTableSalt));
   }
 
   /// Steps until `frames` results are out. Throws DeadlockError (naming the FIFOs that hold the
@@ -149,6 +154,11 @@ class PipelineChain {
   }
 
   const std::vector<Result>& results() const { return sink_->beats(); }
+  /// Every object word that left on the object-table output, frames back to back.
+  const std::vector<hls::labelling::LabelPacket>& object_table() const {
+    return table_sink_->beats();
+  }
+
   /// Cycles since cycle 0.
   std::int64_t cycles() const { return sim_.cycle() - start_; }
   /// The first cycle of the run on the simulator's clock: subtract it from report() stamps.
@@ -303,13 +313,13 @@ class PipelineChain {
     if (e == Engine::cpp) {
       hls::warning::check_config<Params>(setup_.warning);
       sim_.add<StreamComponent<WarningModel<Params>>>("warning", WarningModel<Params>(setup_.warning),
-                                                      *objects_, res);
+                                                      *warning_in_, res);
       return;
     }
     using VM = typename Rtl::warning;
     if constexpr (kBuilt<VM>) {
       sim_.add<StreamComponent<WarningRtl<VM>>>(
-          "warning", make_warning_rtl<VM, Params>("warning", setup_.warning), *objects_, res);
+          "warning", make_warning_rtl<VM, Params>("warning", setup_.warning), *warning_in_, res);
     } else {
       not_built("warning");
     }
@@ -340,8 +350,11 @@ class PipelineChain {
   Fifo<disp_beat>* disp_ = nullptr;
   Fifo<label_beat>* label_in_ = nullptr;
   Fifo<hls::labelling::LabelPacket>* objects_ = nullptr;
+  Fifo<hls::labelling::LabelPacket>* warning_in_ = nullptr;
+  Fifo<hls::labelling::LabelPacket>* table_ = nullptr;
   Fifo<Result>* out_ = nullptr;
   Sink<Result>* sink_ = nullptr;
+  Sink<hls::labelling::LabelPacket>* table_sink_ = nullptr;
   Source<raw_beat>* src_l_ = nullptr;
   Source<raw_beat>* src_r_ = nullptr;
   std::int64_t start_ = 0;

@@ -3,6 +3,7 @@
 // RTL, the FIFO depths, and the checks that turn a setup no stage can take into a clear error.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -35,6 +36,12 @@ struct PipelineEngines {
 
 /// Depths of the links (scw_pipeline's *FifoDepth parameters; the defaults are the top's).
 /// The stages take one beat per clock, so two to four places suffice.
+/// Seeds of the second input's and the second output's stall patterns (the right camera, the
+/// object table), derived from the first's (StallPattern::other_stream) the same way by the
+/// C++ chain and the Verilated top, so both stall alike.
+inline constexpr std::uint64_t kRightInputSalt = 17;
+inline constexpr std::uint64_t kObjectTableSalt = 29;
+
 struct PipelineDepths {
   int raw = 2;   // input and checked pixels, per camera
   int map = 4;   // map-grid expander to rectifier

@@ -16,6 +16,7 @@
 #include "sim/pipeline_setup.hpp"
 #include "sim/stall.hpp"
 #include "sim/disparity_rtl.hpp"
+#include "sim/labelling_pack.hpp"
 #include "sim/labelling_rtl.hpp"
 #include "sim/map_grid_rtl.hpp"
 #include "sim/verilated_harness.hpp"
@@ -39,6 +40,7 @@ constexpr bool pipeline_params_match() {
 struct TopRun {
   std::vector<hls::pipeline::PipelineResultPacket> results;
   std::vector<std::int64_t> result_cycles;
+  std::vector<hls::labelling::LabelPacket> object_table;  // every word of the obj_* output
   std::vector<std::int64_t> first_in_cycles;  // left input beats with sof
   std::int64_t cycles = 0;
 };
@@ -71,6 +73,7 @@ class PipelineTop {
     m.l_valid_i = 0;
     m.r_valid_i = 0;
     m.out_ready_i = 0;
+    m.obj_ready_i = 0;
     h_->reset();
     load(false, s, s.left_knots);
     load(true, s, s.right_knots);
@@ -83,14 +86,14 @@ class PipelineTop {
   TopRun run(const std::vector<raw_beat>& left, const std::vector<raw_beat>& right,
              std::size_t frames, std::int64_t max_cycles, const StallPattern& in = {},
              const StallPattern& out = {}) {
-    StallPattern in_r = in;
-    in_r.seed = in.seed * 7919 + 17;
-    Driver dl(left, in), dr(right, in_r);
+    Driver dl(left, in), dr(right, in.other_stream(kRightInputSalt));
     StallGen sink(out, StallGen::Side::kOutput);
+    StallGen table_sink(out.other_stream(kObjectTableSalt), StallGen::Side::kOutput);
     VM& m = h_->dut();
     TopRun r;
     using L = BeatLayout<raw_beat>;
     using R = BeatLayout<hls::pipeline::PipelineResultPacket>;
+    using O = BeatLayout<hls::labelling::LabelPacket>;
     for (std::int64_t c = 0; r.results.size() < frames; ++c) {
       if (c >= max_cycles)
         throw std::runtime_error("scw_pipeline: " + std::to_string(r.results.size()) + " of " +
@@ -98,6 +101,7 @@ class PipelineTop {
                                  std::to_string(max_cycles) + " cycles");
       const bool lv = dl.offer(), rv = dr.offer();
       const bool out_ready = sink.next();
+      const bool obj_ready = table_sink.next();
       m.l_valid_i = lv;
       L::payload(dl.beat()).to_port(m.l_data_i);
       m.l_sof_i = dl.beat().sof;
@@ -107,6 +111,7 @@ class PipelineTop {
       m.r_sof_i = dr.beat().sof;
       m.r_eol_i = dr.beat().eol;
       m.out_ready_i = out_ready;
+      m.obj_ready_i = obj_ready;
       m.eval();
       const bool l_take = lv && m.l_ready_o, r_take = rv && m.r_ready_o;
       if (l_take && dl.beat().sof) r.first_in_cycles.push_back(c);
@@ -114,6 +119,10 @@ class PipelineTop {
         r.results.push_back(
             R::from_payload(Bits::from_port(m.out_data_o, R::kPayloadBits), m.out_last_o));
         r.result_cycles.push_back(c);
+      }
+      if (obj_ready && m.obj_valid_o) {
+        r.object_table.push_back(
+            O::from_payload(Bits::from_port(m.obj_data_o, O::kPayloadBits), m.obj_last_o));
       }
       h_->tick();
       dl.taken(l_take);

@@ -22,6 +22,13 @@ struct StallPattern {
 
   /// The four fixed patterns plus `random_seeds` seeded random ones: what every RTL test runs.
   static std::vector<StallPattern> all(int random_seeds = 3);
+  /// The same pattern for a second stream at the same end (the right camera, the object
+  /// table), with its own random draws, so the two do not stall in step.
+  StallPattern other_stream(std::uint64_t salt) const {
+    StallPattern p = *this;
+    p.seed = seed * 7919 + salt;
+    return p;
+  }
   /// Parses "none", "idle", "backpressure", "both" or "random:<seed>".
   static StallPattern parse(const std::string& text);
 };

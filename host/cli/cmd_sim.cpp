@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,7 @@
 #include "host/pipeline/reference_chain.hpp"
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
+#include "host/synth/builds.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "sim/pipeline_chain.hpp"
 #if SCW_THESIS_RTL
@@ -42,6 +44,7 @@ struct Options {
   int dmin = -1, num_disp = 0;
   std::string stalls = "none";
   std::string json;
+  std::string synth_json;  // a `scw synth --json` report of the same build: ms at its Fmax
   bool reference = false;
 };
 
@@ -119,6 +122,9 @@ template <typename Build, typename Rtl>
 int run(const Options& o, int width, int height, int dmin_default, int num_disp_default,
         const sim::PipelineEngines& built = sim::PipelineEngines::all(sim::Engine::rtl)) {
   constexpr int P = Build::kPpc;
+  // Read before the run, so a wrong report fails in a second, not after minutes of simulation.
+  std::optional<host::synth::SlowestModule> slow;
+  if (!o.synth_json.empty()) slow = host::synth::slowest_module(o.synth_json, o.config, P);
   host::pipeline::StageOptions so;
   so.mode = o.mode == "thesis" ? disparity::Mode::thesis : disparity::Mode::opencv;
   if (o.mode != "thesis" && o.mode != "opencv")
@@ -181,6 +187,21 @@ int run(const Options& o, int width, int height, int dmin_default, int num_disp_
   line("frame period T_P", t.period, kThesisPeriod);
   line("latency T_L, first beat", t.latency_first, kThesisLatency);
   line("latency T_L, last beat", t.latency_last, nullptr);
+  nlohmann::json at_fmax;
+  if (slow) {
+    const auto ms_at = [&](std::int64_t c) { return c / (slow->fmax_mhz * 1000.0); };
+    std::cout << "\nat the estimated Fmax of the slowest module, " << slow->module << " ("
+              << slow->sta_ps << " ps of logic, " << std::setprecision(1) << slow->fmax_mhz
+              << " MHz, docs/timing.md):" << std::setprecision(3) << " T_P " << ms_at(t.period)
+              << " ms, T_L " << ms_at(t.latency_first) << " ms (thesis FPGA: "
+              << kThesisPeriod[2] << " / " << kThesisLatency[2] << " ms at 125 MHz)\n";
+    at_fmax = {{"module", slow->module},
+               {"sta_ps", slow->sta_ps},
+               {"fmax_mhz_est", slow->fmax_mhz},
+               {"period_ms", ms_at(t.period)},
+               {"latency_first_ms", ms_at(t.latency_first)},
+               {"latency_last_ms", ms_at(t.latency_last)}};
+  }
   std::cout << "\nbusy = a block's first beat in to its last beat out, last frame; T_P = "
                "between the last two results; T_L = the last frame's.\n"
             << "every block, per frame (cycles from the first input beat):\n";
@@ -269,9 +290,12 @@ int run(const Options& o, int width, int height, int dmin_default, int num_disp_
                         {"fifos", fifos},
                         {"per_frame", frames},
                         {"reference", ref_json},
-                        {"thesis_ms", {{"fpga", {{"period", 6.8}, {"latency", 9.5}}},
-                                       {"gpu", {{"period", 9.6}, {"latency", 9.6}}},
-                                       {"cpu", {{"period", 37.4}, {"latency", 37.4}}}}}};
+                        {"at_fmax_est", at_fmax},
+                        {"thesis_ms",
+                         {{"fpga", {{"period", kThesisPeriod[2]}, {"latency", kThesisLatency[2]}}},
+                          {"gpu", {{"period", kThesisPeriod[1]}, {"latency", kThesisLatency[1]}}},
+                          {"cpu",
+                           {{"period", kThesisPeriod[0]}, {"latency", kThesisLatency[0]}}}}}};
     std::ofstream(o.json) << j.dump(2) << "\n";
     std::cerr << "wrote " << o.json << "\n";
   }
@@ -349,6 +373,9 @@ void add_sim_command(CLI::App& app) {
                   "input gaps and output backpressure: none, idle, backpressure, both, random:SEED")
       ->capture_default_str();
   cmd->add_option("--json", o->json, "write the measurements as JSON");
+  cmd->add_option("--synth-json", o->synth_json,
+                  "a `scw synth --json` report of the same --config and --ppc: also give T_P and "
+                  "T_L in ms at the estimated Fmax of its slowest module");
   cmd->add_flag("--reference", o->reference,
                 "also run the floating-point chain on the pair and compare the frame result");
   cmd->callback([o] {

@@ -82,10 +82,15 @@ module scw_frame_check #(
   logic [WidthW-1:0]  last_col_idx;  // beats per row - 1
   logic [HeightW-1:0] last_row_idx;  // rows - 1
   logic               one_col, one_row;  // rows of one beat, frames of one row
+  logic               two_col, two_row;  // rows of two beats, frames of two rows
+  // The counters' next values and whether they are the last, from registers only: the beat's
+  // sof (read from the FIFO in front, a LUT RAM) only picks between them, so no adder or compare
+  // sits behind the FIFO read (docs/timing.md).
+  logic [WidthW-1:0]  col_inc;
+  logic [HeightW-1:0] row_inc;
+  logic               col_inc_last, row_inc_last;
   logic               adv, emits, take;
-  // The offered beat's place and error (a sof restarts the count).
-  logic [WidthW-1:0]  cur_col;
-  logic [HeightW-1:0] cur_row;
+  // The offered beat's last-place flags and error (a sof restarts the count).
   logic               cur_last_col, cur_last_row, beat_err;
 
   // The configuration is static, so its derived limits are registered: the subtractions stay
@@ -95,15 +100,20 @@ module scw_frame_check #(
     last_row_idx <= cfg_height_i - HeightW'(1);
     one_col      <= (cfg_width_i >> PpcLog2) == WidthW'(1);
     one_row      <= cfg_height_i == HeightW'(1);
+    two_col      <= (cfg_width_i >> PpcLog2) == WidthW'(2);
+    two_row      <= cfg_height_i == HeightW'(2);
   end
+
+  assign col_inc      = col_q + WidthW'(1);
+  assign row_inc      = row_q + HeightW'(1);
+  assign col_inc_last = col_inc == last_col_idx;
+  assign row_inc_last = row_inc == last_row_idx;
 
   assign adv   = !out_valid_q || out_ready_i;
   assign emits = in_frame_q && (in_sof_i || (col_last_q && row_last_q));
   assign in_ready_o = adv && (!emits || !flag_valid_q || flag_ready_i);
   assign take  = in_valid_i && in_ready_o;
 
-  assign cur_col      = in_sof_i ? '0 : col_q;
-  assign cur_row      = in_sof_i ? '0 : row_q;
   assign cur_last_col = in_sof_i ? one_col : col_last_q;
   assign cur_last_row = in_sof_i ? one_row : row_last_q;
   // A new frame inherits stray beats only when it follows a gap between frames.
@@ -135,10 +145,19 @@ module scw_frame_check #(
         end else begin
           in_frame_d = 1'b1;
           err_d      = beat_err;
-          col_d      = cur_last_col ? '0 : cur_col + WidthW'(1);
-          row_d      = cur_last_col ? cur_row + HeightW'(1) : cur_row;
-          col_last_d = col_d == last_col_idx;
-          row_last_d = row_d == last_row_idx;
+          // As col_d = cur_last_col ? 0 : cur_col + 1, row_d = cur_last_col ? cur_row + 1 : cur_row
+          // and their compares with the last index, with cur_* = 0 on a sof.
+          if (in_sof_i) begin
+            col_d      = one_col ? '0 : WidthW'(1);
+            row_d      = one_col ? HeightW'(1) : '0;
+            col_last_d = one_col ? one_col : two_col;
+            row_last_d = one_col ? two_row : one_row;
+          end else begin
+            col_d      = col_last_q ? '0 : col_inc;
+            row_d      = col_last_q ? row_inc : row_q;
+            col_last_d = col_last_q ? one_col : col_inc_last;
+            row_last_d = col_last_q ? row_inc_last : row_last_q;
+          end
         end
       end
     end

@@ -3,10 +3,11 @@
 // rectifier), disparity, labelling and warning, every link an scw_fifo.
 `default_nettype none
 
-//  left raw  -> [camera L] --rect--> scw_disparity -> FIFO -> scw_labelling -> FIFO -> scw_warning
-//  right raw -> [camera R] --rect-->       -> FIFO -> scw_result_merge -> FIFO -> out
-//                  |flag                                   ^
-//                  +---------------------------------------+
+//  left raw  -> [camera L] --rect--> scw_disparity -> FIFO -> scw_labelling -> FIFO -> fork
+//  right raw -> [camera R] --rect-->    fork -> FIFO -> obj (the object table, for the host)
+//                  |flag                fork -> FIFO -> scw_warning -> FIFO -> scw_result_merge
+//                  |                                                              |
+//                  +----------------------------------------------------> FIFO -> out
 // The C++ chain sim/pipeline_chain.hpp builds the same graph from the stages' models (or their
 // Verilated twins) and sim::Fifo, the twin of scw_fifo, so the two agree clock for clock
 // (tests/pipeline). Parameters: hls::pipeline::PipelineParams, the one list of built sizes.
@@ -100,6 +101,11 @@ module scw_pipeline #(
   input  logic [BeatW-1:0]   r_data_i,
   input  logic               r_sof_i,
   input  logic               r_eol_i,
+  // the object table: every object word of a frame (scw_labelling's), the last one marked
+  output logic               obj_valid_o,
+  input  logic               obj_ready_i,
+  output logic [ObjW-1:0]    obj_data_o,
+  output logic               obj_last_o,
   // one result word per frame
   output logic               out_valid_o,
   input  logic               out_ready_i,
@@ -201,14 +207,39 @@ module scw_pipeline #(
     .count_o()
   );
 
+  // The object words go to the warning stage and out to the host in lockstep: a word leaves
+  // the object FIFO when both FIFOs behind it have room. Both readies are FIFO flags (registered),
+  // so the fork adds no path through a stage (sim::Fork is its twin).
+  logic          ow_valid, ow_ready, ot_valid, ot_ready, wi_valid, wi_ready;
+  logic [ObjW:0] wi_word, ot_word;
+  assign oq_ready = ow_ready && ot_ready;
+  assign ow_valid = oq_valid && ot_ready;
+  assign ot_valid = oq_valid && ow_ready;
+
+  scw_fifo #(.Width(ObjW + 1), .Depth(ObjFifoDepth)) u_objw_fifo (
+    .clk_i, .rst_ni,
+    .in_valid_i(ow_valid), .in_ready_o(ow_ready), .in_data_i(oq_word),
+    .out_valid_o(wi_valid), .out_ready_i(wi_ready), .out_data_o(wi_word),
+    .count_o()
+  );
+
+  scw_fifo #(.Width(ObjW + 1), .Depth(ObjFifoDepth)) u_table_fifo (
+    .clk_i, .rst_ni,
+    .in_valid_i(ot_valid), .in_ready_o(ot_ready), .in_data_i(oq_word),
+    .out_valid_o(obj_valid_o), .out_ready_i(obj_ready_i), .out_data_o(ot_word),
+    .count_o()
+  );
+  assign obj_data_o = ot_word[ObjW-1:0];
+  assign obj_last_o = ot_word[ObjW];
+
   scw_warning #(.MaxDisparityPx(MaxDisparityPx)) u_warning (
     .clk_i, .rst_ni,
     .cfg_baseline_q8_i, .cfg_focal_q4_i, .cfg_cu_q4_i, .cfg_cv_q4_i, .cfg_veh_x_mm_i,
     .cfg_veh_y_mm_i, .cfg_veh_z_mm_i, .cfg_tunnel_half_w_mm_i, .cfg_tunnel_h_mm_i,
     .cfg_high_mm_i, .cfg_medium_mm_i, .cfg_near_mm_i, .cfg_min_height_mm_i,
     .cfg_d_limit_q4_i,
-    .in_valid_i(oq_valid), .in_ready_o(oq_ready), .in_data_i(oq_word[ObjW-1:0]),
-    .in_last_i(oq_word[ObjW]),
+    .in_valid_i(wi_valid), .in_ready_o(wi_ready), .in_data_i(wi_word[ObjW-1:0]),
+    .in_last_i(wi_word[ObjW]),
     .out_valid_o(w_valid), .out_ready_i(w_ready), .out_data_o(w_data), .out_last_o(w_last)
   );
 

@@ -27,7 +27,7 @@
 #include "sim/rtl_params.hpp"
 #include "sim/simulator.hpp"
 #include "sim/stream_check.hpp"
-#include "tests/pipeline/split_check_configs.hpp"
+#include "tests/pipeline/frame_check_configs.hpp"
 
 namespace {
 
@@ -38,7 +38,7 @@ using scw::sim::StallPattern;
 using scw::test::pipeline::CheckP1;
 using scw::test::pipeline::CheckP2;
 
-// split_check.cmake builds these two with -G.
+// frame_check.cmake builds these two with -G.
 static_assert(scw::sim::frame_check_params_match<Vframe_check_p1_scw_frame_check, CheckP1>());
 static_assert(scw::sim::frame_check_params_match<Vframe_check_p2_scw_frame_check, CheckP2>());
 static_assert(Vframe_check_p1_scw_frame_check::MaxWidthPx == 16 && CheckP1::kWidthBits == 5 &&

@@ -101,6 +101,24 @@ void check_three_ways(int frames) {
   CHECK(result_cycles<P>(rtl) == result_cycles<P>(cpp));
   CHECK(t.result_cycles == result_cycles<P>(cpp));
   CHECK(top.errors() == 0u);
+  // The object table leaves the top word for word as the C++ chain's labelling stage sent it:
+  // per frame its object words, then the status word (last) that counts them.
+  CHECK(rtl.object_table() == cpp.object_table());
+  CHECK(t.object_table == cpp.object_table());
+  std::size_t words = 0, frames_seen = 0;
+  for (const auto& word : cpp.object_table()) {
+    if (!word.last) {
+      CHECK_FALSE(word.data.is_status);
+      ++words;
+      continue;
+    }
+    REQUIRE(word.data.is_status);
+    CHECK(word.data.status.objects == words);
+    CHECK(word.data.status.objects == cpp.results()[frames_seen].data.frame.objects);
+    words = 0;
+    ++frames_seen;
+  }
+  CHECK(frames_seen == static_cast<std::size_t>(frames));
   // Every link moved the same beats at the same cycles, C++ and RTL.
   const auto a = cpp.report(), b = rtl.report();
   REQUIRE(a.fifos.size() == b.fifos.size());
@@ -181,6 +199,8 @@ void check_stalls() {
     CHECK(t.results == calm.results());
     CHECK(result_cycles<P>(rtl) == result_cycles<P>(cpp));
     CHECK(t.result_cycles == result_cycles<P>(cpp));
+    CHECK(rtl.object_table() == cpp.object_table());
+    CHECK(t.object_table == cpp.object_table());
     CHECK(cpp.cycles() > calm.cycles());  // the gaps did cost time
   }
 }
