@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -89,8 +90,21 @@ struct Rectification {
 Rectification set_up_camera(Options& o, cv::Size size) {
   auto& w = o.run.warning;
   if (o.rectified) {
-    if (o.focal <= 0 || o.baseline <= 0)
-      throw std::runtime_error("--rectified needs --focal (px) and --baseline (m)");
+    // Zero is the options' "not given"; any other value must be a positive length.
+    const auto need_positive = [](double v, const std::string& opt, const std::string& what,
+                                  const std::string& unit, const std::string& eg) {
+      if (v == 0)
+        throw std::runtime_error("--rectified needs " + opt + " (" + what + ", " + unit +
+                                 "), e.g. " + opt + " " + eg);
+      if (!(v > 0)) {
+        std::ostringstream m;
+        m << opt << " " << v << ": the " << what << " must be a positive number of " << unit
+          << ", e.g. " << opt << " " << eg;
+        throw std::runtime_error(m.str());
+      }
+    };
+    need_positive(o.focal, "--focal", "focal length", "px", "615");
+    need_positive(o.baseline, "--baseline", "baseline", "m", "0.1");
     w.focal_px = o.focal;
     w.baseline_m = o.baseline;
     w.cu_px = o.cx >= 0 ? o.cx : (size.width - 1) / 2.0;

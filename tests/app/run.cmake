@@ -34,6 +34,8 @@ add_test(NAME "app:cli run on a sequence writes one line per pair and shows prog
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 foreach(bad
     "rectified without focal|--rectified --left '${scw_tsu}/scene1.row3.col3.ppm' --right '${scw_tsu}/scene1.row3.col4.ppm'|needs --focal"
+    "a negative baseline|--rectified --focal 615 --baseline -1 --left '${scw_tsu}/scene1.row3.col3.ppm' --right '${scw_tsu}/scene1.row3.col4.ppm'|--baseline -1: the baseline must be a positive number of m"
+    "a negative focal length|--rectified --focal -615 --baseline 0.1 --left '${scw_tsu}/scene1.row3.col3.ppm' --right '${scw_tsu}/scene1.row3.col4.ppm'|--focal -615: the focal length must be a positive"
     "sizes differ|--rectified --focal 615 --baseline 0.1 --left '${scw_tsu}/scene1.row3.col3.ppm' --right '${PROJECT_SOURCE_DIR}/data/chessboard/right01.jpg'|differ in size"
     "an empty sequence folder|--rectified --focal 615 --baseline 0.1 --sequence .|holds no pairs"
     "a broken calibration|--calib '${scw_tsu}/scene1.row3.col3.ppm' --left '${scw_tsu}/scene1.row3.col3.ppm' --right '${scw_tsu}/scene1.row3.col4.ppm'|scene1.row3.col3.ppm"
