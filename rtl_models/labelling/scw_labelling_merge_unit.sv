@@ -71,7 +71,7 @@ module scw_labelling_merge_unit #(
   state_e state_q, state_d;
   // the state's decodes the read port follows, as registers without reset (reset holds state_d at
   // StIdle, so they equal state_q's decode from the first clock; see the edge queue's nonempty)
-  logic s_idle_q, s_finda_q, s_findb_q;
+  logic s_idle_q, s_finda_q, s_findb_q, s_patha_q, s_pathb_q;
   logic [NodeW-1:0] a_q, a_d, b_q, b_d, ra_q, ra_d, root_q, root_d, cur_q, cur_d;
   logic [NodeW-1:0] up, lo, hi;
   logic at_root;
@@ -80,8 +80,10 @@ module scw_labelling_merge_unit #(
   assign at_root = !rd_data_i[NodeW];
   assign up      = rd_data_i[NodeW-1:0];  // the parent of the node just read
   // The two roots of FindB's last clock, ordered.
-  assign lo      = (ra_q < cur_q) ? ra_q : cur_q;
-  assign hi      = (ra_q < cur_q) ? cur_q : ra_q;
+  // ra_q vs cur_q and the edge's ends vs the root, compared as those registers load
+  logic lt_q, ne_q, a_ne_q, b_ne_q;
+  assign lo      = lt_q ? ra_q : cur_q;
+  assign hi      = lt_q ? cur_q : ra_q;
 
   always_comb begin
     state_d   = state_q;
@@ -149,15 +151,26 @@ module scw_labelling_merge_unit #(
         default: state_d = StIdle;
       endcase
     end
-    // The read port again, from the registered decodes: the same reads, a shorter path.
+    // The read and write ports again, from the registered decodes and compares: the same
+    // accesses, shorter paths.
     rd_en_o   = en_i && ((s_idle_q && nonempty) || s_finda_q || (s_findb_q && !at_root));
     rd_addr_o = s_idle_q ? head_a : ((s_finda_q && at_root) ? b_q : up);
+    wr_en_o   = en_i && ((s_findb_q && at_root && ne_q) || (s_patha_q && a_ne_q) ||
+                         (s_pathb_q && b_ne_q));
+    wr_addr_o = s_findb_q ? hi : (s_patha_q ? a_q : b_q);
+    wr_data_o = {1'b1, s_findb_q ? lo : root_q};
   end
 
   always_ff @(posedge clk_i) begin
     s_idle_q  <= state_d == StIdle;
     s_finda_q <= state_d == StFindA;
     s_findb_q <= state_d == StFindB;
+    s_patha_q <= state_d == StPathA;
+    s_pathb_q <= state_d == StPathB;
+    lt_q      <= ra_d < cur_d;
+    ne_q      <= ra_d != cur_d;
+    a_ne_q    <= a_q != lo;
+    b_ne_q    <= b_q != lo;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
