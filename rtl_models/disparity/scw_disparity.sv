@@ -100,6 +100,24 @@ module scw_disparity #(
   logic [WW-1:0] dmin_q, width_q;
   logic [NumW-1:0] num_q;
   logic [XW-1:0] first_valid_q;  // dmin + n - 1 + R: the first column with a decision
+  logic [XW-1:0] fvr_q;          // first_valid + R: the first input column with a decision
+  logic [XW-1:0] hrm_q;          // H - R - 1
+  // Per lane i, what a word column must be for lane i to hold a decision (region) or a
+  // computed output (right edge), one less, as the next word's tests are made on this one:
+  // col + 1 >= ceil((fvr - i) / P) and col + 1 < ceil((W - R - i) / P).
+  logic [Ppc*XW-1:0] rcm_q, ocm_q;
+  logic [Ppc-1:0] rz_q, oz_q;  // the same tests for word column 0
+  for (genvar i = 0; i < Ppc; i++) begin : gen_lane_cfg
+    logic [XW-1:0] rc, oc;
+    assign rc = (fvr_q + XW'(Ppc - 1 - i)) >> $clog2(Ppc);
+    assign oc = (XW'(width_q) - XW'(R) + XW'(Ppc - 1 - i)) >> $clog2(Ppc);
+    always_ff @(posedge clk_i) begin
+      rcm_q[i*XW +: XW] <= rc - 1'b1;
+      ocm_q[i*XW +: XW] <= oc - 1'b1;
+      rz_q[i]           <= rc == '0;
+      oz_q[i]           <= oc != '0;
+    end
+  end
   logic [15:0] invalid_q;
   logic prefilter_q;
   always_ff @(posedge clk_i) begin
@@ -111,22 +129,25 @@ module scw_disparity #(
     num_q         <= (cfg_num_disp_i == '0 || cfg_num_disp_i >= NumW'(NumDisp))
                          ? NumW'(NumDisp) : cfg_num_disp_i;
     first_valid_q <= XW'(cfg_dmin_i) + XW'(num_q) - 1'b1 + XW'(R);
+    fvr_q         <= first_valid_q + XW'(R);
+    hrm_q         <= XW'(cfg_height_i) - XW'(R + 1);
     invalid_q     <= cfg_opencv_invalid_i ? {12'(cfg_dmin_i) - 12'd1, 4'd0} : '0;
     prefilter_q   <= cfg_prefilter_i;
   end
 
   // ---- credits ---------------------------------------------------------------------------
   // core_room_q is the room for the next beat, registered from the count's next value, so the
-  // writer's ready and everything behind it start at a register rather than at the count's
-  // adder and compare.
-  logic [QCW-1:0] count_q, ready_q, count_d;  // results issued and not read; of those, readable
+  // writer's ready and everything behind it start at a register. The count's four possible
+  // next values (issue or not, read or not) and their room tests are formed from registers
+  // only (n_emit_q, n_out_q); issue and read just pick one.
+  logic [QCW-1:0] count_q, ready_q;  // results issued and not read; of those, readable
   logic core_room, core_room_q;
   assign core_room = core_room_q;
 
   // ---- writer ----------------------------------------------------------------------------
   logic [ColW-1:0] in_col_q;
   logic [HW-1:0] in_row_q;
-  logic skip_q, held_q;
+  logic skip_q, held_q, in_first_q;
   logic [BeatW-1:0] held_l_q, held_r_q;
   logic pf_wr_allowed, pf_rd_allowed, input_room, take, frame_start, have;
   logic held_set, held_clr, err_in;
@@ -136,7 +157,7 @@ module scw_disparity #(
   assign l_ready_o   = !skip_q && !held_q && l_valid_i && r_valid_i && input_room;
   assign r_ready_o   = l_ready_o;
   assign take        = l_ready_o;
-  assign frame_start = (in_col_q == '0) && (in_row_q == '0);
+  assign frame_start = in_first_q;  // (in_col_q, in_row_q) == (0, 0), a register
 
   // The pair written, whatever decides whether it is: a taken pair clears neither skip nor
   // held, so the data needs no part of the handshake (only the write enable does).
@@ -173,8 +194,10 @@ module scw_disparity #(
       in_row_q <= '0;
       skip_q   <= 1'b0;
       held_q   <= 1'b0;
+      in_first_q <= 1'b1;
     end else begin
       if (have) begin
+        in_first_q <= (in_col_q == last_col_q) && (in_row_q == last_row_q);
         if (in_col_q != last_col_q) begin
           in_col_q <= in_col_q + 1'b1;
         end else begin
@@ -237,20 +260,46 @@ module scw_disparity #(
   logic [HW-1:0] core_row_q;
   logic [SlotW-1:0] core_slot_q;
   logic [1:0] frames_ahead_q;  // frames the core has started and the reader has not
-  logic [Ppc-1:0] emit, region;
-  logic [LnW-1:0] n_emit;
+  // emit_q, region_q, n_emit_q describe the word at (core_col_q, core_row_q) and are formed
+  // for the next word when one is issued, from registers: output pixel (x - R, y - R) exists
+  // when x >= R and y >= 2R; it holds a decision when x >= fvr.
+  logic [Ppc-1:0] emit, region, emit_q, region_q, emit_nx, region_nx;
+  logic [LnW-1:0] n_emit_q, n_emit_nx;
+  logic emit_row_q, emit_row_nx, core_last_col, core_last_row;
   logic core_fs, read_fs;
   assign issue   = prefilter_q ? pf_rd : have;
   assign core_fs = (core_col_q == '0) && (core_row_q == '0);
+  assign emit    = emit_q;
+  assign region  = region_q;
+  assign core_last_col = core_col_q == last_col_q;
+  assign core_last_row = core_row_q == last_row_q;
+  assign emit_row_nx   = !core_last_col ? emit_row_q
+                       : !core_last_row && (core_row_q >= HW'(2 * R - 1));
 
   always_comb begin
-    n_emit = '0;
+    n_emit_nx = '0;
     for (int i = 0; i < Ppc; i++) begin
-      // output pixel (x - R, y - R) exists when x >= R and y >= 2R
-      emit[i]   = (core_row_q >= HW'(2 * R)) &&
-                  ((XW'(core_col_q) * XW'(Ppc) + XW'(i)) >= XW'(R));
-      region[i] = (XW'(core_col_q) * XW'(Ppc) + XW'(i)) >= first_valid_q + XW'(R);
-      n_emit    = n_emit + LnW'(emit[i]);
+      // word column c + 1 >= ceil((R - i) / P), or column 0 when the row ends
+      emit_nx[i]   = emit_row_nx &&
+                     (core_last_col ? ((R + Ppc - 1 - i) / Ppc == 0)
+                                    : (XW'(core_col_q) + 1'b1 >= XW'((R + Ppc - 1 - i) / Ppc)));
+      region_nx[i] = core_last_col ? rz_q[i]
+                                   : $signed(XW'(core_col_q)) >= $signed(rcm_q[i*XW +: XW]);
+      n_emit_nx    = n_emit_nx + LnW'(emit_nx[i]);
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      emit_q     <= '0;  // row 0 has no output
+      region_q   <= '0;  // not read where nothing is emitted
+      n_emit_q   <= '0;
+      emit_row_q <= 1'b0;
+    end else if (issue) begin
+      emit_q     <= emit_nx;
+      region_q   <= region_nx;
+      n_emit_q   <= n_emit_nx;
+      emit_row_q <= emit_row_nx;
     end
   end
 
@@ -294,10 +343,21 @@ module scw_disparity #(
       if (!rst_ni) dly_valid_q <= '0;
       else dly_valid_q <= {dly_valid_q[PfLatency-2:0], issue};
     end
+    // Each stage loads with its own valid: different enables keep the delay out of SRLs,
+    // whose slow clock-to-out would start the sums' address arithmetic.
     always_ff @(posedge clk_i) begin
-      dly_info_q <= {dly_info_q[(PfLatency-1)*InfoW-1:0],
-                     emit, region, core_slot_q, core_row_q, core_col_q};
-      dly_raw_q  <= {dly_raw_q[(PfLatency-1)*2*BeatW-1:0], have_r, have_l};
+      if (issue) begin
+        dly_info_q[InfoW-1:0]   <= {emit, region, core_slot_q, core_row_q, core_col_q};
+        dly_raw_q[2*BeatW-1:0]  <= {have_r, have_l};
+      end
+    end
+    for (genvar k = 1; k < PfLatency; k++) begin : gen_stage
+      always_ff @(posedge clk_i) begin
+        if (dly_valid_q[k-1]) begin
+          dly_info_q[k*InfoW +: InfoW]     <= dly_info_q[(k-1)*InfoW +: InfoW];
+          dly_raw_q[k*2*BeatW +: 2*BeatW]  <= dly_raw_q[(k-1)*2*BeatW +: 2*BeatW];
+        end
+      end
     end
   end
 
@@ -347,7 +407,7 @@ module scw_disparity #(
   // Results of a beat are a suffix of its lanes and an output beat takes a prefix of its
   // lanes, so both sides move consecutive positions: a rotation by the position's lane.
   logic [QW-1:0] head_q, tail_q;
-  logic [LnW-1:0] n_in, n_out;
+  logic [LnW-1:0] n_in;
   logic [LaneW-1:0] rank [Ppc];
   always_comb begin
     n_in = '0;
@@ -402,27 +462,37 @@ module scw_disparity #(
   logic [HW-1:0] out_row_q;
   logic out_valid_q, out_sof_q, out_eol_q, adv, started, allowed, read;
   logic [OutW-1:0] out_data_q, rd_beat;
-  logic [XW-1:0] out_x, right_edge;
-  logic row_computed;
-  assign out_x        = XW'(out_col_q) * XW'(Ppc);
-  assign right_edge   = XW'(width_q) - XW'(R);  // columns >= W - R are not computed
-  assign row_computed = (out_row_q >= HW'(R)) && (out_row_q < height_q - HW'(R));
+  // n_out_q, lanes_q (its lanes, a prefix), row_comp_q and out_first_q describe the word at
+  // (out_col_q, out_row_q) and are formed for the next word on a read, from registers: rows
+  // R .. H - R - 1 and columns below W - R are computed.
+  logic [Ppc-1:0] lanes_q, lanes_nx;
+  logic [LnW-1:0] n_out_q, n_out_nx;
+  logic row_comp_q, row_comp_nx, out_first_q, out_last_col, out_last_row;
+  assign out_last_col = out_col_q == last_col_q;
+  assign out_last_row = out_row_q == last_row_q;
+  /* verilator lint_off UNSIGNED */
+  assign row_comp_nx  = !out_last_col ? row_comp_q
+                      : !out_last_row && (out_row_q >= HW'(R - 1)) &&
+                        (XW'(out_row_q) < hrm_q);
+  /* verilator lint_on UNSIGNED */
   always_comb begin
-    n_out = '0;
+    n_out_nx = '0;
     for (int i = 0; i < Ppc; i++) begin
-      if (row_computed && (out_x + XW'(i)) < right_edge) n_out = n_out + 1'b1;
+      lanes_nx[i] = row_comp_nx && (out_last_col ? oz_q[i]
+                                                 : XW'(out_col_q) < ocm_q[i*XW +: XW]);
+      n_out_nx    = n_out_nx + LnW'(lanes_nx[i]);
     end
   end
-  assign read_fs = read && (out_col_q == '0) && (out_row_q == '0);
-  assign started = !((out_col_q == '0) && (out_row_q == '0) && (frames_ahead_q == '0));
-  assign allowed = started && (ready_q >= QCW'(n_out));
+  assign read_fs = read && out_first_q;
+  assign started = !(out_first_q && (frames_ahead_q == '0));
+  assign allowed = started && (ready_q >= QCW'(n_out_q));
   assign adv     = !out_valid_q || out_ready_i;
   assign read    = adv && allowed;
 
   always_comb begin
     for (int i = 0; i < Ppc; i++) begin
       rd_beat[i*16 +: 16] = invalid_q;
-      if (LnW'(i) < n_out) rd_beat[i*16 +: 16] = lane_rd[i];
+      if (lanes_q[i]) rd_beat[i*16 +: 16] = lane_rd[i];
     end
   end
 
@@ -430,6 +500,10 @@ module scw_disparity #(
     if (!rst_ni) begin
       out_col_q   <= '0;
       out_row_q   <= '0;
+      out_first_q <= 1'b1;
+      row_comp_q  <= 1'b0;
+      lanes_q     <= '0;
+      n_out_q     <= '0;
       out_valid_q <= 1'b0;
       head_q      <= '0;
       tail_q      <= '0;
@@ -440,7 +514,11 @@ module scw_disparity #(
     end else begin
       if (adv) out_valid_q <= read;
       if (read) begin
-        head_q <= head_q + QW'(n_out);
+        head_q      <= head_q + QW'(n_out_q);
+        out_first_q <= out_last_col && out_last_row;
+        row_comp_q  <= row_comp_nx;
+        lanes_q     <= lanes_nx;
+        n_out_q     <= n_out_nx;
         if (out_col_q != last_col_q) begin
           out_col_q <= out_col_q + 1'b1;
         end else begin
@@ -448,21 +526,41 @@ module scw_disparity #(
           out_row_q <= (out_row_q == last_row_q) ? '0 : out_row_q + 1'b1;
         end
       end
-      tail_q  <= tail_q + QW'(n_in);
-      count_q     <= count_d;
-      core_room_q <= (QCW'(Queue) - count_d) >= QCW'(Ppc);
-      ready_q <= ready_q + QCW'(n_in) - (read ? QCW'(n_out) : '0);
+      tail_q      <= tail_q + QW'(n_in);
+      count_q     <= cnt_nx[{issue, read}];
+      core_room_q <= room_nx[{issue, read}];
+      ready_q     <= read ? ready_rd : ready_nrd;
       if (err_in) err_o <= 1'b1;
     end
   end
 
-  assign count_d = count_q + (issue ? QCW'(n_emit) : '0) - (read ? QCW'(n_out) : '0);
+  // [{issue, read}]: the count's next value and whether it leaves room for Ppc more results,
+  // count + e - o <= Queue - Ppc, that is le[Ppc + o - e] with le[k] = count <= Queue - 2 Ppc + k:
+  // compares against constants, picked by the small e and o.
+  logic [QCW-1:0] cnt_nx [4];
+  logic [3:0] room_nx;
+  logic [2*Ppc:0] le;
+  logic [QCW-1:0] ready_rd, ready_nrd;
+  for (genvar k = 0; k <= 2 * Ppc; k++) begin : gen_le
+    assign le[k] = count_q <= QCW'(Queue - 2 * Ppc + k);
+  end
+  for (genvar c = 0; c < 4; c++) begin : gen_cnt
+    localparam bit Iss = c[1];
+    localparam bit Rd  = c[0];
+    logic [LnW:0] idx;
+    assign cnt_nx[c]  = count_q + (Iss ? QCW'(n_emit_q) : '0) - (Rd ? QCW'(n_out_q) : '0);
+    assign idx        = (LnW + 1)'(Ppc) + (Rd ? (LnW + 1)'(n_out_q) : '0) -
+                        (Iss ? (LnW + 1)'(n_emit_q) : '0);
+    assign room_nx[c] = le[idx];
+  end
+  assign ready_nrd = ready_q + QCW'(n_in);
+  assign ready_rd  = ready_q + QCW'(n_in) - QCW'(n_out_q);
 
   always_ff @(posedge clk_i) begin
     if (read) begin
       out_data_q <= rd_beat;
-      out_sof_q  <= (out_col_q == '0) && (out_row_q == '0);
-      out_eol_q  <= out_col_q == last_col_q;
+      out_sof_q  <= out_first_q;
+      out_eol_q  <= out_last_col;
     end
   end
 

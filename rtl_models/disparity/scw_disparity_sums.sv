@@ -101,7 +101,8 @@ module scw_disparity_sums #(
   logic [ColW-1:0] col_back;
   logic [LbAW-1:0] wr_addr, old_addr, old_back_addr;
   assign old_slot      = (slot_i == SlotW'(Window)) ? '0 : slot_i + 1'b1;  // row y - N
-  assign col_back      = (col_i >= back_words_q) ? col_i - back_words_q : '0;  // masked anyway
+  // Left of column 0 it wraps to some other word: those pixels are masked, whatever they are.
+  assign col_back      = col_i - back_words_q;
   assign wr_addr       = LbAW'(slot_i) * LbAW'(Cols) + LbAW'(col_i);
   assign old_addr      = LbAW'(old_slot) * LbAW'(Cols) + LbAW'(col_i);
   assign old_back_addr = LbAW'(old_slot) * LbAW'(Cols) + LbAW'(col_back);
