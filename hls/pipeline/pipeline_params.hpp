@@ -47,7 +47,7 @@ struct PipelineParams {
 /// (20 .. 64), 64 raw rows in each rectifier, knots every 16 px, 8 x 4 labelling tiles of 256
 /// labels, 256 objects, a reciprocal table up to 128 px.
 template <int P>
-using ThesisPipeline = PipelineParams<P, 1280, 480, 64, 4, 21, 45, 8, 4, 256, 256, 128>;
+using ThesisPipeline = PipelineParams<P, 1280, 480, 64, 4, 21, 45, 8, 4, 32, 256, 128>;
 
 /// A small build for tests and CI (RTL compiles and runs in seconds): up to 128 x 96 (a crop
 /// of the Tsukuba pair fits, disparities 0 .. 15), window 9, 16 candidates, 16 raw rows, knots
