@@ -75,7 +75,7 @@ module scw_disparity_prefilter #(
 
   // ---- configuration ---------------------------------------------------------------------
   // Static: registered without reset (settled while rst_ni is low), with what derives from it.
-  logic [ColW-1:0] last_col_q;
+  logic [ColW-1:0] last_col_q, last_col_m1_q;
   logic [HW-1:0] last_row_q;
   logic one_col_q, odd_q;
   logic [5:0] cap_q;
@@ -84,6 +84,7 @@ module scw_disparity_prefilter #(
   assign cols_cfg = cfg_width_i >> PpcLog;
   always_ff @(posedge clk_i) begin
     last_col_q <= ColW'(cols_cfg - 1'b1);
+    last_col_m1_q <= ColW'(cols_cfg - WW'(2));
     one_col_q  <= cols_cfg == WW'(1);
     last_row_q <= cfg_height_i - 1'b1;
     odd_q      <= cfg_height_i[0];
@@ -92,7 +93,9 @@ module scw_disparity_prefilter #(
   end
 
   // ---- shared counter ----------------------------------------------------------------------
-  logic [2:0] avail_q;  // 0 .. 4
+  logic [2:0] avail_q, avail_inc, avail_dec;  // 0 .. 4
+  assign avail_inc = avail_q + 3'd1;
+  assign avail_dec = avail_q - 3'd1;
   logic wr_row_done, rd_row_done, last_row;
 
   assign wr_allowed_o = !avail_q[2];
@@ -106,7 +109,10 @@ module scw_disparity_prefilter #(
   logic [PixW-1:0] left_q;
   logic [WordW-1:0] g_word;
 
-  assign wr_last     = in_x_q == last_col_q;
+  // wr_last_q: the next raw word ends its row (rows of two words or more; a one-word row
+  // always does), a register, so the row count's update is a select behind wr_i.
+  logic wr_last_q;
+  assign wr_last     = one_col_q || wr_last_q;
   assign wr_row_done = wr_i && wr_last;
   // g-word k - 1 as raw word k arrives, the held last g-word of a row one clock later, or a
   // one-word row straight from the input.
@@ -189,7 +195,9 @@ module scw_disparity_prefilter #(
       out_y_q    <= '0;
       out_slot_q <= '0;
       avail_q    <= '0;
+      wr_last_q  <= 1'b0;
     end else begin
+      if (wr_i) wr_last_q <= !wr_last && in_x_q == last_col_m1_q;
       if (wr_i) begin
         if (wr_last) begin
           in_x_q    <= '0;
@@ -208,7 +216,7 @@ module scw_disparity_prefilter #(
           out_x_q <= out_x_q + 1'b1;
         end
       end
-      avail_q <= avail_q + 3'(wr_row_done) - 3'(rd_row_done);
+      avail_q <= (wr_row_done == rd_row_done) ? avail_q : wr_row_done ? avail_inc : avail_dec;
     end
   end
 
