@@ -111,12 +111,12 @@ module scw_disparity_prefilter #(
 
   // wr_last_q: the next raw word ends its row (rows of two words or more; a one-word row
   // always does), a register, so the row count's update is a select behind wr_i.
-  logic wr_last_q;
+  logic wr_last_q, in_x0_q;  // and in_x0_q: in_x_q == 0
   assign wr_last     = one_col_q || wr_last_q;
   assign wr_row_done = wr_i && wr_last;
   // g-word k - 1 as raw word k arrives, the held last g-word of a row one clock later, or a
   // one-word row straight from the input.
-  assign gw_en   = pend_q || (wr_i && (one_col_q || in_x_q != '0));
+  assign gw_en   = pend_q || (wr_i && (one_col_q || !in_x0_q));
   assign gw_slot = one_col_q ? in_slot_q : g_slot_q;
   assign gw_addr = one_col_q ? '0 : g_addr_q;
   assign g_src   = one_col_q ? wr_data_i : prev_q;
@@ -196,8 +196,12 @@ module scw_disparity_prefilter #(
       out_slot_q <= '0;
       avail_q    <= '0;
       wr_last_q  <= 1'b0;
+      in_x0_q    <= 1'b1;
     end else begin
-      if (wr_i) wr_last_q <= !wr_last && in_x_q == last_col_m1_q;
+      if (wr_i) begin
+        wr_last_q <= !wr_last && in_x_q == last_col_m1_q;
+        in_x0_q   <= wr_last;
+      end
       if (wr_i) begin
         if (wr_last) begin
           in_x_q    <= '0;
