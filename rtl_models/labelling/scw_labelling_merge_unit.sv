@@ -167,10 +167,13 @@ module scw_labelling_merge_unit #(
     s_findb_q <= state_d == StFindB;
     s_patha_q <= state_d == StPathA;
     s_pathb_q <= state_d == StPathB;
-    lt_q      <= ra_d < cur_d;
-    ne_q      <= ra_d != cur_d;
-    a_ne_q    <= a_q != lo;
-    b_ne_q    <= b_q != lo;
+    // (ra_d, cur_d when the next state is FindB: cur_q, b_q from FindA; ra_q, up within FindB)
+    lt_q      <= s_finda_q ? (cur_q < b_q) : (ra_q < up);
+    ne_q      <= s_finda_q ? (cur_q != b_q) : (ra_q != up);
+    if (s_findb_q) begin  // the last FindB clock leaves the root's
+      a_ne_q <= a_q != lo;
+      b_ne_q <= b_q != lo;
+    end
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
