@@ -142,7 +142,8 @@ module scw_labelling_lane #(
   // P4: the decided pixel's edges
   logic p4_valid_q, p4_want0_q, p4_want1_q, p4_up_left_q;
   logic [N1W-1:0] p4_node1_q, p4_left1_q, p4_up1_q;
-  logic has_last_q, has_last_d;
+  logic has_last_q, has_last_d, has_last;  // has_last: a copy without reset (see the stage's
+                                           // phase flags)
   logic [N1W-1:0] last_a_q, last_a_d, last_b_q, last_b_d;
   // P4 .. P7: the decided pixel's descriptor (P7 only for forwarding)
   logic a4_valid_q, a4_init_q, a5_valid_q, a5_init_q, a6_valid_q, a7_valid_q;
@@ -282,8 +283,8 @@ module scw_labelling_lane #(
   // (P3 compared the pixel's nodes: want0, want1 and whether both edges are one, up == left)
   logic push0, push1, eq0, eq1;
 
-  assign eq0     = has_last_q && (p4_left1_q == last_a_q) && (p4_node1_q == last_b_q);
-  assign eq1     = has_last_q && (p4_up1_q == last_a_q) && (p4_node1_q == last_b_q);
+  assign eq0     = has_last && (p4_left1_q == last_a_q) && (p4_node1_q == last_b_q);
+  assign eq1     = has_last && (p4_up1_q == last_a_q) && (p4_node1_q == last_b_q);
   assign push0   = p4_valid_q && p4_want0_q && !eq0;
   assign push1   = p4_valid_q && p4_want1_q && !(push0 ? p4_up_left_q : eq1);
   assign push_n  = {1'b0, push0} + {1'b0, push1};
@@ -718,6 +719,7 @@ module scw_labelling_lane #(
     end
     q_push_a_q     <= {push1_a, push0_a};
     q_push_b_q     <= {push1_b, push0_b};
+    has_last       <= has_last_d;  // (reset holds has_last_d at 0: no edge while !en_i)
     last_a_q       <= last_a_d;
     last_b_q       <= last_b_d;
     // The decided pixel is the next one's left neighbour (a strip's first pixel has none, and
