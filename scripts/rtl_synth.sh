@@ -16,7 +16,8 @@
 #   --max-sta-ps N  fail (exit 3) when the worst register-to-register path is longer than N ps
 #
 # Reads the files listed by scripts/rtl_lint.sh --files <module>, applies the parameters
-# with chparam, runs `synth_xilinx -flatten -top <module>`, `stat`, and `ltp -noff` with
+# with chparam, runs `synth_xilinx -flatten -noiopad -top <module>` (no I/O buffers: a path into
+# an output port then ends at the port), `stat`, and `ltp -noff` with
 # flip-flops, block RAMs and I/O buffers excluded, and prints one line:
 #   <module> [Param=value ...]: LUT=.. FF=.. RAMB18=.. RAMB36=.. DSP=.. LUTRAM=.. SRL=..
 #   logic_levels=.. logic_levels_dsp_cut=.. yosys_s=..
@@ -129,7 +130,7 @@ done
     echo "chparam${chparam} ${module}"
   fi
   echo "hierarchy -check -top ${module}${libdirs}"
-  echo "synth_xilinx -flatten -top ${module}"
+  echo "synth_xilinx -flatten -noiopad -top ${module}"
   echo "tee -q -o stat.txt stat"
   if [[ $run_ltp -eq 1 ]]; then
     # Xilinx flip-flops are not "FF cell types" to ltp -noff (those are Yosys' internal
@@ -233,13 +234,17 @@ if [[ $run_sta -eq 1 ]]; then
   fi
   case "$sta_to" in
     FD*.*|RAMB18E1.*|RAMB36E1.*|DSP48E1.*|SRL16E.*|SRLC32E.*) ;;
+    RAM[0-9]*M.*|RAM[0-9]*X1[DS].*) ;;  # LUT RAM: its write port is clocked
     "<primary output>") sta_to="output_port" ;;  # a module output: the path goes on outside
     "<unknown>")
-      # Yosys takes the latest arrival over every net. The one unused net a 7-series netlist
-      # is full of is the top of a carry chain (CARRY4 O/CO bits nothing reads): its arrival is
-      # the chain's, so the figure still covers the logic. Any other untimed end is refused.
+      # Yosys takes the latest arrival over every net. The unused nets a 7-series netlist is
+      # full of are the spare outputs of wide cells: the top of a carry chain (CARRY4 O/CO), the
+      # block RAM and DSP output bits a narrower word leaves over. Their arrival is the cell's,
+      # so the figure still covers the logic. Any other untimed end is refused.
       if [[ "$last_hop" =~ ^CARRY4\.[A-Z0-9]+-\>C?O$ ]]; then
         sta_to="unused_carry_output"
+      elif [[ "$last_hop" =~ ^(RAMB18E1|RAMB36E1|DSP48E1)\. ]]; then
+        sta_to="unused_${last_hop%%.*}_output"
       else
         keep_work=$own_log
         echo "rtl_synth: ${label}: sta's worst path ends at a net with no timed pin after" \
@@ -249,7 +254,8 @@ if [[ $run_sta -eq 1 ]]; then
     *)
       keep_work=$own_log
       echo "rtl_synth: ${label}: sta's worst path ends at '${sta_to}', not at a flip-flop," \
-        "block RAM, DSP, shift register or output: the number would not be a clock period" >&2
+        "block RAM, LUT RAM, DSP, shift register or output: the number would not be a clock" \
+        "period" >&2
       exit 1 ;;
   esac
   [[ -z "$sta_path_out" ]] || cp "$work/sta.txt" "$sta_path_out"

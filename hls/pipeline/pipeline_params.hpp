@@ -44,7 +44,7 @@ struct PipelineParams {
 };
 
 /// The thesis configuration (architecture section 2): 1280 x 480, window 21, 45 candidates
-/// (20 .. 64), 64 raw rows in each rectifier, knots every 16 px, 8 x 4 labelling tiles of 256
+/// (20 .. 64), 64 raw rows in each rectifier, knots every 16 px, 8 x 4 labelling tiles of 32
 /// labels, 256 objects, a reciprocal table up to 128 px.
 template <int P>
 using ThesisPipeline = PipelineParams<P, 1280, 480, 64, 4, 21, 45, 8, 4, 32, 256, 128>;
