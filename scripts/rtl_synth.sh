@@ -230,7 +230,7 @@ if [[ $run_sta -eq 1 ]]; then
     sta_from="$(printf '%s\n' "$path" | awk '{ gsub(/[()]/, "", $2) } $2 ~ /^BUFG\./ { print prev; exit }
                                               { prev = $2 }')"
   else
-    sta_from="input:$(sed -n 's/^ *0 *\\*\([^ ]*\) (<primary input>).*/\1/p' "$work/sta.txt" | head -n 1)"
+    sta_from="input:$(sed -n 's/^ *[0-9]* *\\*\(.*[^ ]\) *(<primary input>).*/\1/p' "$work/sta.txt" | head -n 1 | tr -d ' ')"
   fi
   case "$sta_to" in
     FD*.*|RAMB18E1.*|RAMB36E1.*|DSP48E1.*|SRL16E.*|SRLC32E.*) ;;
