@@ -41,8 +41,7 @@ RunResult<typename Model::out_type> run_join(Model& model, std::vector<typename 
   using Out = typename Model::out_type;
   RunResult<Out> r;
   OutputCheck<Out> check(r);
-  StallPattern pb = pattern;
-  pb.seed = pattern.seed * 7919 + 17;
+  const StallPattern pb = pattern.other_stream(17);  // the second input idles on its own
   StreamDriver<A> da(std::move(a), pattern);
   StreamDriver<B> db(std::move(b), pb);
   StreamMonitor<Out> mon(pattern);
