@@ -66,7 +66,7 @@ class Harness {
 
   /// Settles combinational logic after inputs change (no clock edge).
   void eval() { dut_->eval(); }
-  /// Holds rst_ni low for `cycles` clock cycles (asynchronous reset, released between edges).
+  /// Holds rst_ni low for `cycles` clock cycles (the RTL resets synchronously, on these edges).
   void reset(int cycles = 2) {
     dut_->rst_ni = 0;
     for (int i = 0; i < cycles; ++i) tick();

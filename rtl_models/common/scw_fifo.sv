@@ -46,7 +46,7 @@ module scw_fifo #(
     else if (pop && !push) count_d = count_q - 1'b1;
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       wr_ptr_q <= '0;
       rd_ptr_q <= '0;

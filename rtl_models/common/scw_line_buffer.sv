@@ -135,7 +135,7 @@ module scw_line_buffer #(
     logic f1_q, f2_q;
     logic [RamW-1:0] f2_data_q;
 
-    always_ff @(posedge clk_i or negedge rst_ni) begin
+    always_ff @(posedge clk_i) begin
       if (!rst_ni) s2_valid_q <= 1'b0;
       else if (adv) s2_valid_q <= s1_valid_q;
     end
@@ -194,7 +194,7 @@ module scw_line_buffer #(
   assign out_sof_o   = out_sof_q;
   assign out_eol_o   = out_eol_q;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       col_q       <= '0;
       row_q       <= '0;

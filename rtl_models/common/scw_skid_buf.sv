@@ -41,7 +41,7 @@ module scw_skid_buf #(
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       main_valid_q <= 1'b0;
       skid_valid_q <= 1'b0;

@@ -23,7 +23,7 @@ module scw_stream_reg #(
   assign out_valid_o = valid_q;
   assign out_data_o  = data_q;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) valid_q <= 1'b0;
     else if (in_ready_o) valid_q <= in_valid_i;
   end

@@ -188,7 +188,7 @@ module scw_disparity #(
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       in_col_q <= '0;
       in_row_q <= '0;
@@ -289,7 +289,7 @@ module scw_disparity #(
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       emit_q     <= '0;  // row 0 has no output
       region_q   <= '0;  // not read where nothing is emitted
@@ -303,7 +303,7 @@ module scw_disparity #(
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       core_col_q     <= '0;
       core_row_q     <= '0;
@@ -330,7 +330,7 @@ module scw_disparity #(
   logic [PfLatency*InfoW-1:0] dly_info_q;
   logic [PfLatency*2*BeatW-1:0] dly_raw_q;
   if (PfLatency == 1) begin : gen_dly1
-    always_ff @(posedge clk_i or negedge rst_ni) begin
+    always_ff @(posedge clk_i) begin
       if (!rst_ni) dly_valid_q <= '0;
       else dly_valid_q <= issue;
     end
@@ -339,7 +339,7 @@ module scw_disparity #(
       dly_raw_q  <= {have_r, have_l};
     end
   end else begin : gen_dly
-    always_ff @(posedge clk_i or negedge rst_ni) begin
+    always_ff @(posedge clk_i) begin
       if (!rst_ni) dly_valid_q <= '0;
       else dly_valid_q <= {dly_valid_q[PfLatency-2:0], issue};
     end
@@ -496,7 +496,7 @@ module scw_disparity #(
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       out_col_q   <= '0;
       out_row_q   <= '0;

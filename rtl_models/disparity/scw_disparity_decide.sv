@@ -140,7 +140,7 @@ module scw_disparity_decide #(
 
   // ---- valid pipeline and the per-pixel side signals ------------------------------------
   logic [Latency-1:0] valid_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) valid_q <= '0;
     else valid_q <= Latency'({valid_q, valid_i});
   end

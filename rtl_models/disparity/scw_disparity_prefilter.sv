@@ -186,7 +186,7 @@ module scw_disparity_prefilter #(
     assign cap_lanes[i] = edge_col || (odd_q && last_row);
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       in_x_q     <= '0;
       in_slot_q  <= '0;
@@ -252,7 +252,7 @@ module scw_disparity_prefilter #(
   logic [WordW-1:0] s2_cur_q;
   logic [BeatW-1:0] out_pix, out_data_q;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       s1_valid_q  <= 1'b0;
       s15_valid_q <= 1'b0;

@@ -138,7 +138,7 @@ module scw_disparity_sums #(
   // first_q[k]: the beat in stage k starts its row.
   logic [Latency-1:6] first_q;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) v_q <= '0;
     else v_q <= {v_q[Latency-1:1], valid_i};
   end

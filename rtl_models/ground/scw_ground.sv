@@ -144,7 +144,7 @@ module scw_ground #(
   assign out_sof_o   = out_sof_q;
   assign out_eol_o   = out_eol_q;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       d0_valid_q  <= 1'b0;
       out_valid_q <= 1'b0;

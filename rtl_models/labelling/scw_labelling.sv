@@ -334,7 +334,7 @@ module scw_labelling #(
       /* verilator lint_on PINCONNECTEMPTY */
 
       // The pixel of the FIFO's head the lane takes next.
-      always_ff @(posedge clk_i or negedge rst_ni) begin
+      always_ff @(posedge clk_i) begin
         if (!rst_ni) begin
           sub_q <= '0;
         end else if (lane_take[i]) begin
@@ -523,7 +523,7 @@ module scw_labelling #(
       assign right_rd[b*BordW +: BordW] = lp;
       assign left_rd[b*BordW +: BordW]  = rp;
 
-      always_ff @(posedge clk_i or negedge rst_ni) begin
+      always_ff @(posedge clk_i) begin
         if (!rst_ni) begin
           last_has_q[b] <= 1'b0;
         end else if (frame_end) begin
@@ -579,7 +579,7 @@ module scw_labelling #(
       .wr_data_o(tuf_wr_data)
     );
 
-    always_ff @(posedge clk_i or negedge rst_ni) begin
+    always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         active_q   <= 1'b0;
         b1_valid_q <= 1'b0;
@@ -598,7 +598,7 @@ module scw_labelling #(
 
     // Init: the strips. A tile column a clock while they do not cover the width; every Lanes-th
     // adds a tile to the strip, so strip_q = tile_w x floor(tile columns / Lanes).
-    always_ff @(posedge clk_i or negedge rst_ni) begin
+    always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         measure_q   <= '0;
         measure_k_q <= '0;
@@ -897,7 +897,7 @@ module scw_labelling #(
   );
 
   // ---- registers ---------------------------------------------------------------------------
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       phase_q        <= PhInit;
       init_q         <= '0;

@@ -93,7 +93,7 @@ module scw_labelling_edge_queue #(
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       head_q  <= '0;
       count_q <= '0;

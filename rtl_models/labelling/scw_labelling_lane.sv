@@ -612,7 +612,7 @@ module scw_labelling_lane #(
   );
 
   // ---- registers ---------------------------------------------------------------------------
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       p1_valid_q  <= 1'b0;
       p2_valid_q  <= 1'b0;

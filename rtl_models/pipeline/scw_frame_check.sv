@@ -163,7 +163,7 @@ module scw_frame_check #(
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       in_frame_q   <= 1'b0;
       err_q        <= 1'b0;

@@ -39,7 +39,7 @@ module scw_result_merge #(
   assign out_data_o    = data_q;
   assign out_last_o    = last_q;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) valid_q <= 1'b0;
     else if (adv) valid_q <= take;
   end

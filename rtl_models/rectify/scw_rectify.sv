@@ -190,7 +190,7 @@ module scw_rectify #(
 
   // inc: a raw row finished (written or skipped), wfe: the raw frame's last; dec: an output
   // row's last beat taken, fe: the output frame's last row.
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       inc_q   <= 1'b0;
       dec_q   <= 1'b0;
@@ -267,7 +267,7 @@ module scw_rectify #(
     if (wr_do && wr_last) row_done = 1'b1;
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       in_col_q  <= '0;
       in_row_q  <= '0;
@@ -340,7 +340,7 @@ module scw_rectify #(
   end else begin : gen_wr_bank1
     assign wr_bank = '0;
   end
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       wr_en_q <= '0;
     end else begin
@@ -415,7 +415,7 @@ module scw_rectify #(
     if (emit && !zero && (md_eol != out_last)) err_map = 1'b1;
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       out_col_q  <= '0;
       out_row_q  <= '0;
@@ -473,7 +473,7 @@ module scw_rectify #(
   logic s0_zero_q, s1_zero_q, win_err;
   logic [BeatW-1:0] out_pix;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       vld_q <= '0;
     end else if (adv) begin

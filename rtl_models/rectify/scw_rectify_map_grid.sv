@@ -141,7 +141,7 @@ module scw_rectify_map_grid #(
   assign du0      = u[GridLog2-1:0];
   assign dv       = row_q[GridLog2-1:0];
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       col_q <= '0;
       row_q <= '0;
@@ -200,7 +200,7 @@ module scw_rectify_map_grid #(
   logic [GridLog2-1:0] s0_du_q, s1_du_q, s2_du_q, s3_du_q, s4_du_q, s0_dv_q, s1_dv_q;
   logic [MapW-1:0] out_data_q, out_c;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       vld_q <= '0;
     end else if (adv) begin

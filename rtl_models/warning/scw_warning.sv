@@ -108,7 +108,7 @@ module scw_warning #(
 
   // ---- S1 .. S(Stages-1) --------------------------------------------------------------------
   logic [Stages-1:0] valid_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) valid_q <= '0;
     else if (en) valid_q <= Stages'({valid_q, in_valid_i});
   end
@@ -217,7 +217,7 @@ module scw_warning #(
     fld_d  = close ? '0 : fld_f;
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       out_valid_q <= 1'b0;
       sev_q  <= '0;
