@@ -85,6 +85,10 @@ module scw_rectify_map_grid #(
   localparam int unsigned BAddrW = BRowW + BColW;
   localparam int unsigned BDepth = 1 << BAddrW;
   localparam int unsigned Shift  = 2 * GridLog2 + KnotFracBits - FracBits;
+  // A knot word's bits beyond a multiple of 36 (the RAMB36's 1K x 36 shape) would fill a whole
+  // RAMB18 for a few bits when the grid RAMs are more than 512 deep (40 bits at 1280 x 480: 36
+  // in block RAM, 4 in LUT RAM, 1.5 -> 1 BRAM36 a RAM, 6 -> 4 a camera). Wider remainders stay.
+  localparam int unsigned KnotLutBits = (BDepth > 512 && KnotW % 36 <= 8) ? KnotW % 36 : 0;
   // Signed widths (LW, CW below). L, R are knots times G in convex combination, c knots times
   // G^2: the final values fit exactly (intermediate wrap-around cancels in two's complement),
   // and the multiplier operands are the differences, KBits + 1 and LW + 1 bits (25 x 5 at
@@ -177,8 +181,9 @@ module scw_rectify_map_grid #(
     for (genvar c = 0; c < 2; c++) begin : gen_c
       logic [KnotW-1:0] word, word_q;
       scw_ram_sdp #(
-        .Width(KnotW),
-        .Depth(BDepth)
+        .Width  (KnotW),
+        .Depth  (BDepth),
+        .LutBits(KnotLutBits)
       ) u_ram (
         .clk_i,
         .wr_en_i  (knot_we_i && (wrow[0] == 1'(r)) && (wcol[0] == 1'(c))),
