@@ -13,6 +13,12 @@
 #include "Vfifo_d2_scw_fifo.h"
 #include "Vfifo_d5.h"
 #include "Vfifo_d5_scw_fifo.h"
+#include "Vfifo_d1r.h"
+#include "Vfifo_d1r_scw_fifo.h"
+#include "Vfifo_d2r.h"
+#include "Vfifo_d2r_scw_fifo.h"
+#include "Vfifo_d5r.h"
+#include "Vfifo_d5r_scw_fifo.h"
 #include "Vline_buffer_p1.h"
 #include "Vline_buffer_p1_scw_line_buffer.h"
 #include "Vline_buffer_p2.h"
@@ -45,6 +51,12 @@ static_assert(Vfifo_d2_scw_fifo::Depth == test::FifoD2::kDepth &&
               Vfifo_d2_scw_fifo::Width == test::FifoD2::kWidth);
 static_assert(Vfifo_d5_scw_fifo::Depth == test::FifoD5::kDepth &&
               Vfifo_d5_scw_fifo::Width == test::FifoD5::kWidth);
+static_assert(Vfifo_d1r_scw_fifo::Depth == test::FifoD1::kDepth &&
+              Vfifo_d1r_scw_fifo::Width == test::FifoD1::kWidth && Vfifo_d1r_scw_fifo::OutReg);
+static_assert(Vfifo_d2r_scw_fifo::Depth == test::FifoD2::kDepth &&
+              Vfifo_d2r_scw_fifo::Width == test::FifoD2::kWidth && Vfifo_d2r_scw_fifo::OutReg);
+static_assert(Vfifo_d5r_scw_fifo::Depth == test::FifoD5::kDepth &&
+              Vfifo_d5r_scw_fifo::Width == test::FifoD5::kWidth && Vfifo_d5r_scw_fifo::OutReg);
 static_assert(Vstream_reg_scw_stream_reg::Width == test::kElasticWidth);
 static_assert(Vskid_buf_scw_skid_buf::Width == test::kElasticWidth);
 
@@ -82,6 +94,9 @@ TEST_CASE("scw_fifo equals sim::Fifo cycle for cycle", "[rtl][fifo]") {
   SECTION("depth 1") { check_fifo<Vfifo_d1, Beat2>(test::FifoD1::kDepth); }
   SECTION("depth 2") { check_fifo<Vfifo_d2, Beat2>(test::FifoD2::kDepth); }
   SECTION("depth 5") { check_fifo<Vfifo_d5, Beat4>(test::FifoD5::kDepth); }
+  SECTION("depth 1, registered output") { check_fifo<Vfifo_d1r, Beat2>(test::FifoD1::kDepth); }
+  SECTION("depth 2, registered output") { check_fifo<Vfifo_d2r, Beat2>(test::FifoD2::kDepth); }
+  SECTION("depth 5, registered output") { check_fifo<Vfifo_d5r, Beat4>(test::FifoD5::kDepth); }
 }
 
 TEST_CASE("scw_stream_reg equals sim::StreamReg cycle for cycle", "[rtl][stream_reg]") {
