@@ -34,6 +34,7 @@
 #include "bench/disparity_bench_configs.hpp"
 #include "hls/disparity/disparity.hpp"
 #include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "sim/disparity_model.hpp"
 #include "sim/disparity_rtl.hpp"
@@ -95,10 +96,10 @@ cv::Mat shifted(const cv::Mat& big, int k) {
 }
 
 std::vector<Pair> bench_frames(const Options& o, cv::Size& native) {
-  // read_grey_image converts colour as the CLI does (cv::cvtColor), so the pictures are the
-  // ones `scw disparity` would see.
-  const cv::Mat l = disparity::read_grey_image(o.left);
-  const cv::Mat r = disparity::read_grey_image(o.right);
+  // The CLI's reader (cv::IMREAD_GRAYSCALE), so the pictures are the ones `scw disparity` would
+  // see.
+  const cv::Mat l = host::io::read_grey_image(o.left);
+  const cv::Mat r = host::io::read_grey_image(o.right);
   if (l.size() != r.size()) throw std::runtime_error("the left and right images differ in size");
   native = l.size();
   cv::Mat bl, br;

@@ -22,13 +22,14 @@
 namespace scw::app {
 
 /// Every setting of the chain. Defaults: the settings docs/warning.md measured on the street
-/// pair (window 21, d 0 .. 127, opencv mode, 4 x 4 tiles, 200 px objects, no ground removal,
-/// a 0.5 m minimum height).
+/// pair (window 21, d 0 .. 127, 4 x 4 tiles, 200 px objects, no ground removal, a 0.5 m minimum
+/// height; it measured opencv mode) and the disparity mode every command defaults to
+/// (disparity::kDefaultMode, docs/disparity.md).
 struct RunOptions {
   int window = 21;
   int min_disp = 0;
   int max_disp = 127;
-  disparity::Mode mode = disparity::Mode::opencv;
+  disparity::Mode mode = disparity::kDefaultMode;
   int tiles_x = 4, tiles_y = 4;
   int min_area = 200;
   bool ground = false;  // thesis 6.2 ground-plane removal between disparity and labelling

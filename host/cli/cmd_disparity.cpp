@@ -66,14 +66,14 @@ void write(const std::string& path, const cv::Mat& m) {
 }
 
 void run(const Options& o) {
-  const cv::Mat left = disparity::read_grey_image(o.left);
-  const cv::Mat right = disparity::read_grey_image(o.right);
+  const cv::Mat left = host::io::read_grey_image(o.left);
+  const cv::Mat right = host::io::read_grey_image(o.right);
   if (left.size() != right.size())
     throw std::runtime_error("the left image '" + o.left + "' is " + std::to_string(left.cols) +
                              " x " + std::to_string(left.rows) + " px but the right image '" +
                              o.right + "' is " + std::to_string(right.cols) + " x " +
                              std::to_string(right.rows) + " px; give a rectified pair of one size");
-  const auto mode = o.mode == "opencv" ? disparity::Mode::opencv : disparity::Mode::thesis;
+  const auto mode = disparity::mode_from_name(o.mode);
   auto cfg = disparity::mode_config(mode, left.cols, left.rows, o.min_disp);
   if (o.prefilter_cap >= 0) cfg.prefilter_cap = o.prefilter_cap;
   if (o.texture >= 0) cfg.texture_threshold = o.texture;
@@ -135,10 +135,11 @@ void add_disparity_command(CLI::App& app) {
                       " candidates (max - min + 1)")
       ->required();
   cmd->add_option("--mode", o->mode,
-                  "thesis: plain SAD on raw pixels, nothing rejected, integer d, invalid 0 "
-                  "(default: fewer bad pixels on Tsukuba); opencv: cv::StereoBM's defaults "
-                  "(x-Sobel prefilter cap 31, texture 10, uniqueness 15, sub-pixel, invalid "
-                  "(min-1)*16)")
+                  "thesis: plain SAD on raw pixels, nothing rejected, integer d, invalid 0; "
+                  "opencv: cv::StereoBM's defaults (x-Sobel prefilter cap 31, texture 10, "
+                  "uniqueness 15, sub-pixel, invalid (min-1)*16). scw run and scw sim share the "
+                  "default; docs/disparity.md has the measurements that chose it")
+      ->capture_default_str()
       ->check(CLI::IsMember({"thesis", "opencv"}));
   cmd->add_option("--prefilter-cap", o->prefilter_cap,
                   "x-Sobel cap (opencv mode's prefilter; also the texture measure's offset)")

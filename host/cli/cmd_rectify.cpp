@@ -26,13 +26,6 @@ struct Options {
   double alpha = rectify::kDefaultAlpha;
 };
 
-cv::Mat read_grey(const std::string& path) {
-  cv::Mat img = cv::imread(path, cv::IMREAD_GRAYSCALE);
-  if (img.empty())
-    throw std::runtime_error("cannot read '" + path + "' as an image (PNG, JPEG, PGM, ...)");
-  return img;
-}
-
 std::string size_text(cv::Size s) {
   return std::to_string(s.width) + " x " + std::to_string(s.height);
 }
@@ -56,8 +49,8 @@ cv::Mat side_by_side(const cv::Mat& left, const cv::Mat& right) {
 }
 
 void run(const Options& o) {
-  const cv::Mat left = read_grey(o.left);
-  const cv::Mat right = read_grey(o.right);
+  const cv::Mat left = host::io::read_grey_image(o.left);
+  const cv::Mat right = host::io::read_grey_image(o.right);
   const auto calib = rectify::load_stereo_calibration(o.calib, left.size());
   for (const auto& [path, img] : {std::pair{o.left, left}, std::pair{o.right, right}})
     if (img.size() != calib.image_size)

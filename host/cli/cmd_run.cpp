@@ -37,7 +37,7 @@ struct Options {
   std::string engine = "cpp";
   std::string maps = "full";  // raw pairs: full quantised maps, or expanded grid knots
   int grid_log2 = 4;          // knot spacing of --maps grid (the thesis build's)
-  std::string mode = "opencv";
+  std::string mode = disparity::mode_name(disparity::kDefaultMode);
   std::string tiles;
   app::RunOptions run;
 };
@@ -187,7 +187,7 @@ void run(Options& o) {
       throw std::runtime_error("--tiles " + o.tiles + ": give columns x rows, e.g. 4x4");
     }
   }
-  o.run.mode = o.mode == "thesis" ? disparity::Mode::thesis : disparity::Mode::opencv;
+  o.run.mode = disparity::mode_from_name(o.mode);
   std::vector<std::pair<fs::path, fs::path>> pairs;
   if (!o.sequence.empty()) {
     if (!o.left.empty() || !o.right.empty())
@@ -198,7 +198,7 @@ void run(Options& o) {
       throw std::runtime_error("give --left and --right (or --sequence DIR)");
     pairs.emplace_back(o.left, o.right);
   }
-  const cv::Mat first = disparity::read_grey_image(pairs.front().first.string());
+  const cv::Mat first = host::io::read_grey_image(pairs.front().first.string());
   auto camera = set_up_camera(o, first.size());
   std::cerr << "run: " << pairs.size() << (pairs.size() == 1 ? " pair" : " pairs") << ", "
             << first.cols << " x " << first.rows << " px, f " << o.run.warning.focal_px
@@ -220,8 +220,8 @@ void run(Options& o) {
   if (!jsonl) throw std::runtime_error("cannot write '" + (dir / "results.jsonl").string() + "'");
   Progress progress(pairs.size());
   for (std::size_t i = 0; i < pairs.size(); ++i) {
-    const cv::Mat l = disparity::read_grey_image(pairs[i].first.string());
-    const cv::Mat r = disparity::read_grey_image(pairs[i].second.string());
+    const cv::Mat l = host::io::read_grey_image(pairs[i].first.string());
+    const cv::Mat r = host::io::read_grey_image(pairs[i].second.string());
     if (l.size() != r.size())
       throw std::runtime_error("'" + pairs[i].first.string() + "' (" + std::to_string(l.cols) +
                                " x " + std::to_string(l.rows) + ") and '" +

@@ -18,6 +18,7 @@
 #include "host/app/run.hpp"
 #include "host/cli/commands.hpp"
 #include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "host/pipeline/reference_chain.hpp"
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
@@ -40,7 +41,7 @@ struct Options {
   std::string engine = "cpp";
   std::string rtl_stages;  // comma list: these blocks in RTL, the rest in C++
   std::string left, right;
-  std::string mode = "opencv";
+  std::string mode = disparity::mode_name(disparity::kDefaultMode);
   int dmin = -1, num_disp = 0;
   std::string stalls = "none";
   std::string json;
@@ -106,7 +107,7 @@ std::pair<cv::Mat, cv::Mat> input_pair(const Options& o, int w, int h, int dmin,
         w, h, dmin + 2, host::pipeline::street_boxes(w, h, dmin, dmax), 7);
     return {p.left, p.right};
   }
-  cv::Mat l = disparity::read_grey_image(o.left), r = disparity::read_grey_image(o.right);
+  cv::Mat l = host::io::read_grey_image(o.left), r = host::io::read_grey_image(o.right);
   if (l.size() != r.size())
     throw std::invalid_argument("--left and --right differ in size");
   if (l.cols != w || l.rows != h) {
@@ -126,9 +127,7 @@ int run(const Options& o, int width, int height, int dmin_default, int num_disp_
   std::optional<host::synth::SlowestModule> slow;
   if (!o.synth_json.empty()) slow = host::synth::slowest_module(o.synth_json, o.config, P);
   host::pipeline::StageOptions so;
-  so.mode = o.mode == "thesis" ? disparity::Mode::thesis : disparity::Mode::opencv;
-  if (o.mode != "thesis" && o.mode != "opencv")
-    throw std::invalid_argument("--mode " + o.mode + ": use thesis or opencv");
+  so.mode = disparity::mode_from_name(o.mode);
   so.dmin = o.dmin >= 0 ? o.dmin : dmin_default;
   so.num_disp = o.num_disp > 0 ? o.num_disp : num_disp_default;
   so.tiles_x = Build::kMaxTilesX;

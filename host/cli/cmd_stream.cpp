@@ -18,6 +18,7 @@
 #include "Vcli_line_buffer_p4_scw_line_buffer.h"
 #include "hls/common/line_buffer.hpp"
 #include "host/cli/commands.hpp"
+#include "host/io/image_file.hpp"
 #include "host/reference/line_buffer_ref.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/components.hpp"
@@ -184,9 +185,7 @@ void add_stream_command(CLI::App& app) {
   cmd->add_option("--roi", o->roi, "Stream only this rectangle: X Y W H")->expected(4);
   cmd->callback([o] {
     sim::StallPattern::parse(o->stalls);  // reject a bad pattern before any work
-    cv::Mat img = cv::imread(o->image, cv::IMREAD_GRAYSCALE);
-    if (img.empty())
-      throw std::runtime_error("cannot read '" + o->image + "' as an image (PNG, PGM, PPM, ...)");
+    cv::Mat img = host::io::read_grey_image(o->image);
     if (!o->roi.empty()) {
       const cv::Rect r(o->roi[0], o->roi[1], o->roi[2], o->roi[3]);
       if (r.width <= 0 || r.height <= 0 || (r & cv::Rect(0, 0, img.cols, img.rows)) != r)

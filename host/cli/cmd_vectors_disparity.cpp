@@ -17,6 +17,7 @@
 #include "hls/disparity/disparity_params.hpp"
 #include "host/cli/commands.hpp"
 #include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/frame_beats.hpp"
@@ -88,7 +89,7 @@ Frame synthetic() {
   return f;
 }
 
-/// A 96 x 48 crop of the bundled Tsukuba pair (grey via cv::cvtColor), opencv mode.
+/// A 96 x 48 crop of the bundled Tsukuba pair (read as every command reads it), opencv mode.
 Frame tsukuba(const Options& o) {
   const std::filesystem::path dir(o.data_dir);
   const auto read = [&](const char* name) {
@@ -96,7 +97,7 @@ Frame tsukuba(const Options& o) {
     if (!std::filesystem::exists(p))
       throw std::runtime_error("vectors disparity: no '" + p.string() +
                                "'; the tsukuba set needs data/tsukuba (give --data-dir)");
-    return disparity::read_grey_image(p.string());
+    return host::io::read_grey_image(p.string());
   };
   const cv::Rect roi(144, 112, 96, 48);
   Frame f;
@@ -107,7 +108,7 @@ Frame tsukuba(const Options& o) {
   std::ostringstream d;
   d << "scw disparity stage, opencv mode (x-Sobel prefilter cap 31, texture 10, uniqueness 15, "
        "sub-pixel, invalid -16), N = 9, d 0..15: data/tsukuba scene1.row3.col3.ppm (left) and "
-       "scene1.row3.col4.ppm (right), grey by cv::cvtColor BGR2GRAY, crop x "
+       "scene1.row3.col4.ppm (right), grey by cv::imread IMREAD_GRAYSCALE, crop x "
     << roi.x << " y " << roi.y << " " << roi.width << "x" << roi.height;
   f.description = d.str();
   return f;

@@ -20,6 +20,7 @@
 #include "hls/rectify/map_taps.hpp"
 #include "hls/rectify/rectify_params.hpp"
 #include "host/cli/commands.hpp"
+#include "host/io/image_file.hpp"
 #include "host/rectify/calibration.hpp"
 #include "host/rectify/fixed_map.hpp"
 #include "host/rectify/test_maps.hpp"
@@ -122,12 +123,10 @@ Frame synthetic(const std::string& preset) {
 }
 
 cv::Mat read_grey(const std::filesystem::path& p) {
-  cv::Mat img = cv::imread(p.string(), cv::IMREAD_GRAYSCALE);
-  if (img.empty())
-    throw std::runtime_error("cannot read '" + p.string() +
-                             "' as an image; the chessboard sets "
-                             "need data/chessboard (give --data-dir)");
-  return img;
+  if (!std::filesystem::exists(p))
+    throw std::runtime_error("no '" + p.string() +
+                             "'; the chessboard sets need data/chessboard (give --data-dir)");
+  return host::io::read_grey_image(p);
 }
 
 /// One camera of the chessboard pair, cropped: the map of the output ROI expressed relative to

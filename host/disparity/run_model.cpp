@@ -3,8 +3,6 @@
 #include "host/disparity/run_model.hpp"
 
 #include <algorithm>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <utility>
 
 #include "sim/frame_beats.hpp"
@@ -63,22 +61,13 @@ std::string size_text(const cv::Mat& m) {
 
 }  // namespace
 
-cv::Mat read_grey_image(const std::string& path) {
-  cv::Mat img = cv::imread(path, cv::IMREAD_UNCHANGED);
-  if (img.empty())
-    throw std::runtime_error("cannot read '" + path + "' as an image (PNG, JPEG, PGM, ...)");
-  if (img.depth() != CV_8U)
-    throw std::runtime_error("'" + path + "' has " + std::to_string(img.elemSize1() * 8) +
-                             "-bit samples; the disparity stage takes 8-bit images");
-  if (img.channels() == 3) cv::cvtColor(img, img, cv::COLOR_BGR2GRAY);
-  if (img.channels() == 4) cv::cvtColor(img, img, cv::COLOR_BGRA2GRAY);
-  if (img.channels() != 1)
-    throw std::runtime_error("'" + path + "' has " + std::to_string(img.channels()) +
-                             " channels; give a grey or colour image");
-  return img;
-}
-
 const char* mode_name(Mode m) { return m == Mode::thesis ? "thesis" : "opencv"; }
+
+Mode mode_from_name(const std::string& name) {
+  for (const Mode m : {Mode::thesis, Mode::opencv})
+    if (name == mode_name(m)) return m;
+  throw std::invalid_argument("disparity mode '" + name + "': use thesis or opencv");
+}
 
 DisparityConfig mode_config(Mode m, int width, int height, int dmin) {
   return m == Mode::thesis ? hls::disparity::thesis_mode(width, height, dmin)

@@ -26,20 +26,17 @@ constexpr int kHostMaxWidthPx = 2048;
 constexpr std::array<int, 11> kHostWindows{3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23};
 constexpr int kHostMaxNumDisp = 128;
 
-/// The two named modes of `scw disparity --mode`.
+/// The two named modes of `scw disparity --mode`, `scw run --mode` and `scw sim --mode`.
 enum class Mode { thesis, opencv };
-/// thesis mode: on Tsukuba it has fewer bad-or-missing pixels than cv::StereoBM (and opencv
-/// mode) at every window measured (docs/disparity.md).
-constexpr Mode kDefaultMode = Mode::thesis;
+/// The one default of all three commands; docs/disparity.md ("The default mode") has the
+/// measurements that chose it.
+constexpr Mode kDefaultMode = Mode::opencv;
 /// "thesis" / "opencv".
 const char* mode_name(Mode m);
+/// The mode named "thesis" or "opencv"; throws std::invalid_argument naming both otherwise.
+Mode mode_from_name(const std::string& name);
 /// thesis_mode() or opencv_mode() (cv::StereoBM's defaults) for a frame and dmin.
 DisparityConfig mode_config(Mode m, int width, int height, int dmin);
-
-/// Reads an 8-bit image as grey: colour (BGR, BGRA) through cv::cvtColor, as docs/disparity.md
-/// measured (cv::IMREAD_GRAYSCALE's own conversion can round differently). Throws
-/// std::runtime_error naming the file if it cannot be read or has other than 8-bit samples.
-cv::Mat read_grey_image(const std::string& path);
 
 /// Disparity of an 8-bit grey pair (CV_8UC1, same size) with an N x N window (N = window_n)
 /// and the candidates dmin .. dmax, through the streaming C++ model at P = 1 (hls::disparity,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Writing a picture or an image file, with the one error every command gives when it cannot.
+// Reading and writing image files, with the one error every command gives when it cannot.
 #pragma once
 
 #include <filesystem>
@@ -7,6 +7,13 @@
 #include <opencv2/core.hpp>
 
 namespace scw::host::io {
+
+/// Reads an 8-bit image as grey exactly as `cv::imread(file, cv::IMREAD_GRAYSCALE)` does (the
+/// codec converts colour), so a pair given to scw and to cv::StereoBM holds the same grey levels.
+/// The one reader of every command's input images. Throws std::runtime_error naming the file when
+/// it cannot be read as an image, and when its samples are not 8-bit (a 16-bit or float file,
+/// which IMREAD_GRAYSCALE would silently scale to 8 bits).
+cv::Mat read_grey_image(const std::filesystem::path& file);
 
 /// cv::imwrite with the format from the extension; throws std::runtime_error naming the file
 /// (and OpenCV's reason, e.g. an extension it has no writer for) when it cannot be written.

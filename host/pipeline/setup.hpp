@@ -18,7 +18,7 @@ namespace scw::host::pipeline {
 
 /// The stages' settings that do not come from the build.
 struct StageOptions {
-  disparity::Mode mode = disparity::Mode::opencv;
+  disparity::Mode mode = disparity::kDefaultMode;
   int dmin = 0;
   int num_disp = 16;  // candidates dmin .. dmin + num_disp - 1
   int tiles_x = 2, tiles_y = 2;

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 // The host's whole-image disparity (what `scw disparity` runs): the default mode's accuracy on
-// Tsukuba against cv::StereoBM, equality with the direct reference, and its errors.
+// Tsukuba against cv::StereoBM, equality with the direct reference and, on a colour PNG pair read
+// by both, with cv::StereoBM; the image reader's and the stage's errors.
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <fstream>
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <string>
 #include <vector>
 
 #include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "host/reference/stereo_bm.hpp"
 
@@ -24,9 +29,9 @@ struct Tsukuba {
 const Tsukuba& tsukuba() {
   static const Tsukuba t = [] {
     const std::string dir = SCW_DATA_DIR "/tsukuba/";
-    return Tsukuba{disparity::read_grey_image(dir + "scene1.row3.col3.ppm"),
-                   disparity::read_grey_image(dir + "scene1.row3.col4.ppm"),
-                   disparity::read_grey_image(dir + "truedisp.row3.col3.pgm")};
+    return Tsukuba{host::io::read_grey_image(dir + "scene1.row3.col3.ppm"),
+                   host::io::read_grey_image(dir + "scene1.row3.col4.ppm"),
+                   host::io::read_grey_image(dir + "truedisp.row3.col3.pgm")};
   }();
   return t;
 }
@@ -84,9 +89,92 @@ void check_equal(cv::Rect roi, int n, int dmin, int dmax, const DisparityConfig&
   CHECK(diff == 0);
 }
 
+/// Writes a Tsukuba PPM as a colour PNG in the working directory; returns its name.
+std::string colour_png(const char* ppm, const char* png) {
+  const cv::Mat colour = cv::imread(std::string(SCW_DATA_DIR "/tsukuba/") + ppm, cv::IMREAD_COLOR);
+  REQUIRE(colour.type() == CV_8UC3);
+  REQUIRE(cv::imwrite(png, colour));
+  return png;
+}
+
 }  // namespace
 
-TEST_CASE("disparity_image in the default mode has no more bad pixels than cv::StereoBM on Tsukuba",
+TEST_CASE("opencv mode on a colour PNG pair read by scw equals cv::StereoBM on the same files "
+          "read with IMREAD_GRAYSCALE",
+          "[disparity][host][io]") {
+  const std::string lp = colour_png("scene1.row3.col3.ppm", "colour_pair_left.png");
+  const std::string rp = colour_png("scene1.row3.col4.ppm", "colour_pair_right.png");
+  // What scw reads and what an OpenCV user reads.
+  const cv::Mat l = host::io::read_grey_image(lp), r = host::io::read_grey_image(rp);
+  const cv::Mat ul = cv::imread(lp, cv::IMREAD_GRAYSCALE), ur = cv::imread(rp, cv::IMREAD_GRAYSCALE);
+  REQUIRE(l.type() == CV_8UC1);
+  CHECK(cv::countNonZero(l != ul) == 0);
+  CHECK(cv::countNonZero(r != ur) == 0);
+  // The codec's conversion is not cv::cvtColor's here, so a reader converting with cvtColor (as
+  // scw once did) gives other grey levels and fails the checks above.
+  cv::Mat cvt;
+  cv::cvtColor(cv::imread(lp, cv::IMREAD_COLOR), cvt, cv::COLOR_BGR2GRAY);
+  CHECK(cv::countNonZero(cvt != ul) > 0);
+
+  constexpr int kNumDisp = 16;  // d 0..15
+  for (const int n : {9, 21}) {
+    const auto cfg = disparity::mode_config(disparity::Mode::opencv, l.cols, l.rows, 0);
+    const auto ours = values(disparity::disparity_image(l, r, n, 0, kNumDisp - 1, cfg));
+    const auto bm =
+        reference::stereo_bm(ul.data, ur.data, ul.cols, ul.rows, n, kNumDisp, cfg, true);
+    REQUIRE(ours.size() == bm.size());
+    // StereoBM keeps the largest d of a tie at the minimum SAD where the stage keeps the smallest
+    // (docs/disparity.md): every other pixel must be equal.
+    const auto pl = reference::prefilter_xsobel_reference(l.data, l.cols, l.rows, cfg.prefilter_cap);
+    const auto pr = reference::prefilter_xsobel_reference(r.data, r.cols, r.rows, cfg.prefilter_cap);
+    long differ = 0, untied = 0;
+    for (int v = 0; v < l.rows; ++v)
+      for (int u = 0; u < l.cols; ++u) {
+        const std::size_t i = static_cast<std::size_t>(v) * l.cols + u;
+        if (ours[i] == bm[i]) continue;
+        ++differ;
+        const int rad = n / 2;
+        if (v < rad || v >= l.rows - rad || u < kNumDisp - 1 + rad || u >= l.cols - rad) {
+          ++untied;  // outside the valid region both must hold the invalid code
+          continue;
+        }
+        int best = 0, ties = 0;
+        std::vector<int> sad(kNumDisp);
+        for (int k = 0; k < kNumDisp; ++k) {
+          sad[k] = reference::sad_reference(pl.data(), pr.data(), l.cols, u, v, k, n);
+          if (sad[k] < sad[best]) best = k;
+        }
+        for (int k = 0; k < kNumDisp; ++k) ties += sad[k] == sad[best];
+        untied += ties < 2;
+      }
+    INFO("N " << n << ": " << differ << " of " << ours.size() << " pixels differ, " << untied
+              << " of them without a SAD tie");
+    CHECK(untied == 0);
+    CHECK(differ * 1000 <= static_cast<long>(ours.size()));  // docs/disparity.md: ties are rare
+  }
+}
+
+TEST_CASE("read_grey_image refuses what it cannot read, naming the file and what to give",
+          "[disparity][host][io][errors]") {
+  CHECK_THROWS_WITH(host::io::read_grey_image("no_such_image.png"),
+                    Contains("cannot read 'no_such_image.png' as an image") &&
+                        Contains("give a PNG, JPEG"));
+  {
+    std::ofstream("not_an_image.png") << "this is text, not a PNG\n";
+  }
+  CHECK_THROWS_WITH(host::io::read_grey_image("not_an_image.png"),
+                    Contains("cannot read 'not_an_image.png' as an image"));
+  REQUIRE(cv::imwrite("sixteen_bit.png", cv::Mat(8, 8, CV_16UC1, cv::Scalar(1000))));
+  CHECK_THROWS_WITH(host::io::read_grey_image("sixteen_bit.png"),
+                    Contains("'sixteen_bit.png' has 16-bit samples") && Contains("8-bit"));
+  REQUIRE(cv::imwrite("eight_bit_bgr.png", cv::Mat(8, 8, CV_8UC3, cv::Scalar(10, 20, 30))));
+  const cv::Mat g = host::io::read_grey_image("eight_bit_bgr.png");
+  CHECK(g.type() == CV_8UC1);
+  CHECK(cv::countNonZero(g != cv::imread("eight_bit_bgr.png", cv::IMREAD_GRAYSCALE)) == 0);
+}
+
+TEST_CASE("disparity_image in the default mode has no more bad pixels than cv::StereoBM on Tsukuba "
+          "but for SAD ties",
           "[disparity][host][accuracy]") {
   const Tsukuba& t = tsukuba();
   constexpr int kNumDisp = 16;  // 0..15
@@ -101,9 +189,10 @@ TEST_CASE("disparity_image in the default mode has no more bad pixels than cv::S
                                 bm_cfg, n, kNumDisp);
     INFO("N = " << n << ": " << disparity::mode_name(disparity::kDefaultMode) << " mode " << ours
                 << " % bad, cv::StereoBM " << bm << " % bad");
-    CHECK(ours <= bm);
-    // docs/disparity.md's table (thesis mode 15.41 / 10.92 / 10.24 / 11.14 %).
-    if (disparity::kDefaultMode == disparity::Mode::thesis) CHECK(ours < 16.0);
+    // opencv mode is cv::StereoBM but for SAD ties, which StereoBM breaks towards the larger d
+    // and the stage towards the smaller: they move a few pixels either way (measured: at most
+    // 0.01 points, docs/disparity.md). Thesis mode is 1.2 .. 7 points below it.
+    CHECK(ours <= bm + 0.05);
   }
 }
 

@@ -14,6 +14,7 @@
 #include "hls/ground/ground.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/ground/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "host/reference/ground_ref.hpp"
 #include "sim/ground_model.hpp"
 #include "sim/stream_check.hpp"
@@ -224,8 +225,8 @@ TEST_CASE("model equals the reference on Tsukuba", "[hls][ground]") {
   REQUIRE(gt.type() == CV_8UC1);
   cv::Mat gt16;
   gt.convertTo(gt16, CV_16S);  // value = disparity x 16: already Q11.4
-  const auto l = scw::disparity::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
-  const auto r = scw::disparity::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
+  const auto l = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
+  const auto r = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
   const cv::Mat thesis = scw::disparity::disparity_image(
       l, r, 9, 0, 15, scw::disparity::mode_config(scw::disparity::Mode::thesis, l.cols, l.rows, 0));
   const cv::Mat opencv = scw::disparity::disparity_image(

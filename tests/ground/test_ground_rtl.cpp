@@ -14,6 +14,7 @@
 #include "Vground_w32.h"
 #include "Vground_w32_scw_ground.h"
 #include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "sim/ground_model.hpp"
 #include "sim/ground_rtl.hpp"
 #include "sim/pipeline_shell.hpp"
@@ -150,8 +151,8 @@ TEST_CASE("scw_ground equals the model clock for clock on Tsukuba crops", "[grou
   REQUIRE(gt.type() == CV_8UC1);
   cv::Mat gt16;
   gt.convertTo(gt16, CV_16S);  // value = disparity x 16: already Q11.4
-  const auto l = scw::disparity::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
-  const auto r = scw::disparity::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
+  const auto l = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
+  const auto r = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
   const cv::Mat d = scw::disparity::disparity_image(
       l, r, 9, 0, 15, scw::disparity::mode_config(scw::disparity::Mode::thesis, l.cols, l.rows, 0));
   // The table and the lamp's base (rows 200 .. 247) and the statue's head (rows 60 .. 107).

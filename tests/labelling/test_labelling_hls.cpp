@@ -9,6 +9,7 @@
 #include <string>
 
 #include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "host/labelling/run_model.hpp"
 #include "sim/labelling_model.hpp"
 #include "tests/labelling/labelling_run.hpp"
@@ -134,8 +135,8 @@ TEST_CASE("labelling model equals the flood fill on Tsukuba's ground truth", "[h
 }
 
 TEST_CASE("labelling model equals the flood fill on a disparity-stage map of Tsukuba", "[hls]") {
-  const auto l = scw::disparity::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
-  const auto r = scw::disparity::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
+  const auto l = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
+  const auto r = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
   const cv::Mat d = scw::disparity::disparity_image(
       l, r, 9, 0, 15, scw::disparity::mode_config(scw::disparity::Mode::thesis, l.cols, l.rows, 0));
   cv::Mat d16;

@@ -15,6 +15,7 @@
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "hls/pipeline/pipeline_params.hpp"
 #include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "host/pipeline/reference_chain.hpp"
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
@@ -275,9 +276,9 @@ TEST_CASE("broken input frames are flagged in their result; the next frame is ri
 TEST_CASE("a Tsukuba crop: RTL chain = C++ chain = the floating-point chain's frame result",
           "[pipeline][rtl][ref]") {
   constexpr int P = 1;
-  const cv::Mat l = scw::disparity::read_grey_image(std::string(SCW_DATA_DIR) +
+  const cv::Mat l = scw::host::io::read_grey_image(std::string(SCW_DATA_DIR) +
                                                     "/tsukuba/scene1.row3.col3.ppm");
-  const cv::Mat r = scw::disparity::read_grey_image(std::string(SCW_DATA_DIR) +
+  const cv::Mat r = scw::host::io::read_grey_image(std::string(SCW_DATA_DIR) +
                                                     "/tsukuba/scene1.row3.col4.ppm");
   // The lamp, the head and the table: 128 x 96 from (128, 96).
   const cv::Rect crop(128, 96, 128, 96);

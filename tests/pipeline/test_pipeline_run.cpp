@@ -9,12 +9,13 @@
 
 #include "host/app/run.hpp"
 #include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
 #include "host/pipeline/rtl_engine.hpp"
 
 namespace {
 
 cv::Mat tsukuba(const char* name) {
-  return scw::disparity::read_grey_image(std::string(SCW_DATA_DIR) + "/tsukuba/" + name);
+  return scw::host::io::read_grey_image(std::string(SCW_DATA_DIR) + "/tsukuba/" + name);
 }
 
 scw::app::RunOptions crop_options() {
