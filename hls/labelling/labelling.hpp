@@ -86,8 +86,10 @@ class Labelling {
   static constexpr int kInitClocks =
       N == 1 ? kNodes
              : std::max({Params::kLaneStride, Params::kMaxHeight, Params::kMaxTilesX + 8});
-  /// The border sweep's queue: it reads a row while it has room for two rows' edges.
-  static constexpr int kBorderQueue = 8;
+  /// The border sweep's queue: it reads a row while it has room for the edges of that row and
+  /// of the four in B1 .. B4.
+  static constexpr int kBorderQueue = 16;
+  static constexpr int kBorderRows = 5;
   using in_type = typename Params::in_beat;
   using out_type = LabelPacket;
   using Lane = LabellingLane<Params>;
@@ -166,6 +168,10 @@ class Labelling {
   };
   /// One beat for one lane.
   using LaneBeat = std::array<disp_t, N>;
+  struct LaneHead {  // the beat a lane takes its pixels from, filled from its FIFO
+    bool valid = false;
+    LaneBeat beat{};
+  };
   /// A node iterator over the used nodes, ascending: each lane's, lane by lane; a lane that
   /// used none costs a clock.
   struct Sweep {
@@ -182,22 +188,38 @@ class Labelling {
   void frame_clock(bool take, bool sof_mid, const in_type& in) {
     bool lanes_idle = true;
     for (int i = 0; i < N; ++i)
-      lanes_idle = lanes_idle && lanes_[i].idle() && (N == 1 || fifo_[i].empty());
+      lanes_idle = lanes_idle && lanes_[i].idle() &&
+                   (N == 1 || (fifo_[i].empty() && !ahead_[i].valid && !head_[i].valid));
     const bool drained = phase_ == kDrain && lanes_idle;
     // The beat: one lane takes its pixel (S0), or with lanes it goes into its lane's FIFO.
     int push_lane = -1;
     if (take) push_lane = accept(in);
-    // Each lane: S0 from its FIFO (lanes), then S1, S2 and its merge unit.
+    // Each lane: S0 from its head register (lanes), then S1, S2 and its merge unit. The FIFO
+    // fills the head register through one more (the RTL's FIFO is a block RAM: that register is
+    // its read register, the head its output register); each moves on when the next is empty
+    // or moves on itself, the head when the lane takes its last pixel.
     for (int i = 0; i < N; ++i) {
       Lane& lane = lanes_[i];
-      bool pop = false;
-      if (N > 1 && !fifo_[i].empty() && lane.can_take()) {
-        lane.take(fifo_[i].head()[static_cast<std::size_t>(sub_[i])]);
-        pop = ++sub_[i] == N;
-        if (pop) sub_[i] = 0;
+      bool head_pop = false;
+      if (N > 1 && head_[i].valid && lane.can_take()) {
+        lane.take(head_[i].beat[static_cast<std::size_t>(sub_[i])]);
+        head_pop = ++sub_[i] == N;
+        if (head_pop) sub_[i] = 0;
       }
       if (lane.step(ram_)) tile_overflow_ = true;
       if (N > 1) {
+        const bool ahead_pop = ahead_[i].valid && (!head_[i].valid || head_pop);
+        const bool pop = !fifo_[i].empty() && (!ahead_[i].valid || ahead_pop);
+        if (ahead_pop) {
+          head_[i] = ahead_[i];
+        } else if (head_pop) {
+          head_[i].valid = false;
+        }
+        if (pop) {
+          ahead_[i] = {true, fifo_[i].head()};
+        } else if (ahead_pop) {
+          ahead_[i].valid = false;
+        }
         LaneBeat b{};
         const bool push = push_lane == i;
         if (push) std::copy(in.px.begin(), in.px.end(), b.begin());
@@ -250,25 +272,36 @@ class Labelling {
   }
 
   // ---------------------------------------------------------------- kBorder (lanes)
+  // B0 reads a row, B1 passes the words through the RTL's RAM output registers, B2 forms the
+  // join's multiples (the model tests the join in B3 with joins(), the same integers), B3 drops
+  // a repeat of the border's last edge, B4 queues the edges.
   void border_clock(Reads& rd, ParentPorts& pp) {
-    const bool done = !border_active_ && !b1_valid_ && queue_.count() == 0 && uf_.idle();
+    const bool done = !border_active_ && !b1_valid_ && !b2_.valid && !b3_.valid && !b4_.valid &&
+                      queue_.count() == 0 && uf_.idle();
     // B0: read (and clear for the next frame) both sides of every border in the next row.
-    const bool read = border_active_ && queue_.count() <= kBorderQueue - 2 * (N - 1);
-    // B1: the row read last clock: an edge for every border whose two pixels join.
-    Edge pushes[N > 1 ? N - 1 : 1];
-    int n_push = 0;
-    if (b1_valid_) {
+    const bool read =
+        border_active_ && queue_.count() <= kBorderQueue - kBorderRows * (N - 1);
+    // B4: the edges B3 kept, in border order.
+    const BorderPushes b4 = b4_;
+    // B3: an edge for every border whose two pixels join, unless it repeats its last.
+    BorderPushes b4_next;
+    if (b3_.valid) {
+      b4_next.valid = true;
       for (int b = 0; b + 1 < N; ++b) {
-        const BorderPixel& lp = rd_.right[b];     // the left strip's last pixel
-        const BorderPixel& rp = rd_.left[b + 1];  // the right strip's first pixel (later)
+        const BorderPixel& lp = b3_.right[b];     // the left strip's last pixel
+        const BorderPixel& rp = b3_.left[b + 1];  // the right strip's first pixel (later)
         if (lp.node1 == 0 || rp.node1 == 0 || !joins(rp.d, lp.d)) continue;
         const Edge e{lp.node1 - 1, rp.node1 - 1};
         if (border_has_last_[b] && e == border_last_[b]) continue;  // as this border's last
-        pushes[n_push++] = e;
+        b4_next.edge[b4_next.n++] = e;
         border_last_[b] = e;
         border_has_last_[b] = true;
       }
     }
+    // B1, B2: the row read last clock, registered twice.
+    b3_ = b2_;
+    b2_ = {b1_valid_, rd_.left, rd_.right};
+    b4_ = b4_next;
     if (read) {
       for (int b = 0; b < N; ++b) {
         rd.left[b] = ram_.left[b][border_row_];
@@ -280,7 +313,7 @@ class Labelling {
     }
     b1_valid_ = read;
     const bool pop = uf_.clock(queue_, rd_.parent, pp);
-    queue_.clock(pop, pushes, n_push);
+    queue_.clock(pop, b4.edge, b4.n);
     if (done && !emitting_) start_resolve();  // the last frame's Emit still reads the sums
   }
 
@@ -450,6 +483,15 @@ class Labelling {
     bool valid = false;
     int node = 0, root = 0;
   };
+  struct BorderRow {  // a row's border words in B2 and B3
+    bool valid = false;
+    std::array<BorderPixel, N> left{}, right{};
+  };
+  struct BorderPushes {  // B4: the edges of a row, in border order
+    bool valid = false;
+    int n = 0;
+    Edge edge[N > 1 ? N - 1 : 1]{};
+  };
   struct E1 {  // a node Emit read: its root and sum
     bool valid = false;
     int node = 0, root = 0;
@@ -474,10 +516,13 @@ class Labelling {
   // Lanes, and with lanes their FIFOs and the pixel each takes next from its FIFO's head.
   std::array<Lane, N> lanes_{};
   std::array<RegFifo<LaneBeat, Params::kLaneFifo>, N> fifo_{};
+  std::array<LaneHead, N> ahead_{}, head_{};
   std::array<int, N> sub_{};
   // The border sweep and its merge unit over the whole node space.
   bool border_active_ = false, b1_valid_ = false;
   int border_row_ = 0;
+  BorderRow b2_, b3_;
+  BorderPushes b4_;
   std::array<Edge, N> border_last_{};
   std::array<bool, N> border_has_last_{};
   EdgeQueue<kBorderQueue> queue_;

@@ -15,7 +15,7 @@
 //            the FIFO of the lane whose strip it is in; every lane does the same on its strip
 //   Drain    after the frame's last beat or a sof in mid-frame: wait for the lanes
 //   Border   (lanes only) every row: the two pixels either side of each strip border that join
-//            queue an edge for a merge unit over the whole node space
+//            queue an edge for a merge unit over the whole node space (B0 .. B4)
 //   Resolve  every used node in ascending order (R0 .. R3): its root (parents point to smaller
 //            nodes, so the parent's root is already known) and its descriptor into the root's;
 //            the sweep copies each lane's label count for Emit. Then the next frame may start
@@ -81,8 +81,10 @@ module scw_labelling #(
   localparam int unsigned InitMax = (LaneStride > MaxHeight) ? LaneStride : MaxHeight;
   localparam int unsigned InitClocks /*verilator public*/ =
       (Lanes == 1) ? Nodes : (InitMax > MaxTilesX + 8 ? InitMax : MaxTilesX + 8);
-  // Labelling::kBorderQueue: the border sweep reads a row while two rows' edges fit.
-  localparam int unsigned BorderQueue = 8;
+  // Labelling::kBorderQueue: the border sweep reads a row while five rows' edges fit (the row
+  // read and the four in B1 .. B4).
+  localparam int unsigned BorderQueue = 16;
+  localparam int unsigned BorderRows = 5;
   // Descriptor field widths (hls::labelling::desc_widths, checked equal by
   // sim::labelling_params_match): an object is a set of the frame's pixels and every term is
   // non-negative, so a field is at most its value for the whole W x H frame: area <= W H, a
@@ -168,8 +170,10 @@ module scw_labelling #(
   logic emit_q, emit_d, emit_tile_ovf_q, emit_err_q, obj_ovf_q, obj_ovf_d;
   logic [ObjW-1:0] emitted_q, emitted_d;
   logic [CntW-1:0] emit_cnt_q [Lanes];
-  // the strips, measured in Init: every lane's but the last is strip_q pixels wide
-  logic [15:0] strip_q;
+  // the strips, measured in Init: every lane's but the last is strip_q pixels wide; lane i's
+  // starts at column i x strip_q (x0_q, lane i at [16 i +: 16]), the last is last_w_q wide
+  logic [15:0] strip_q, last_w_q;
+  logic [Lanes*16-1:0] x0_q;
   // R2's root written last clock
   logic rfwd_valid_q, rfwd_valid_d;
   logic [NodeW-1:0] rfwd_node_q, rfwd_root_q;
@@ -296,28 +300,35 @@ module scw_labelling #(
   if (Lanes == 1) begin : gen_one_lane
     assign lane_take     = beat_in;
     assign lane_px       = in_data_i;
-    assign lane_x0       = '0;
-    assign lane_width    = cfg_width_i;
     assign fifo_ready    = 1'b0;
     assign fifo_valid    = 1'b0;
     assign strip_q       = cfg_width_i;
+    assign x0_q          = '0;
+    assign last_w_q      = cfg_width_i;
+    assign lane_x0       = x0_q;
+    assign lane_width    = last_w_q;
     logic unused_border;  // one strip: no borders
     assign unused_border = ^{lane_left_we, lane_right_we, lane_brow, lane_bword};
   end else begin : gen_fifos
     for (genvar i = 0; i < Lanes; i++) begin : gen_fifo
-      logic f_valid, f_pop;
-      logic [16*Lanes-1:0] f_data;
+      logic f_valid, f_pop, a_valid_q, a_pop, h_valid_q, h_pop;
+      logic [16*Lanes-1:0] f_data, a_data_q, h_data_q;
       logic [LaneSW-1:0] sub_q;
       logic f_push;
 
-      assign fifo_valid[i] = f_valid;
+      // The lane takes its pixels from a head register that the FIFO fills through one more
+      // (A, then H): the FIFO's memory is a block RAM, and synthesis makes A its read register
+      // (2.5 ns clock to output), too slow to pick a pixel from and test it in the lane's P0 in
+      // the same clock; H is the RAM's output register.
+      assign fifo_valid[i] = f_valid || a_valid_q || h_valid_q;
       assign f_push       = beat_in && (lanee == LaneSW'(i));
-      assign lane_take[i] = ph_pixels && f_valid && lane_can_take[i];
-      assign f_pop        = lane_take[i] && (sub_q == LaneSW'(Lanes - 1));
-      assign lane_px[i*16 +: 16] = f_data[sub_q*16 +: 16];
-      assign lane_x0[i*16 +: 16]    = 16'(i) * strip_q;
-      assign lane_width[i*16 +: 16] = (i + 1 < Lanes) ? strip_q
-                                    : cfg_width_i - 16'(Lanes - 1) * strip_q;
+      assign lane_take[i] = ph_pixels && h_valid_q && lane_can_take[i];
+      assign h_pop        = lane_take[i] && (sub_q == LaneSW'(Lanes - 1));
+      assign a_pop        = a_valid_q && (!h_valid_q || h_pop);
+      assign f_pop        = f_valid && (!a_valid_q || a_pop);
+      assign lane_px[i*16 +: 16] = h_data_q[sub_q*16 +: 16];
+      assign lane_x0[i*16 +: 16]    = (i == 0) ? 16'd0 : x0_q[i*16 +: 16];
+      assign lane_width[i*16 +: 16] = (i + 1 < Lanes) ? strip_q : last_w_q;
 
       /* verilator lint_off PINCONNECTEMPTY */
       scw_fifo #(.Width(16 * Lanes), .Depth(LaneFifo)) u_fifo (
@@ -333,13 +344,23 @@ module scw_labelling #(
       );
       /* verilator lint_on PINCONNECTEMPTY */
 
-      // The pixel of the FIFO's head the lane takes next.
+      // The head register, and the pixel of it the lane takes next.
       always_ff @(posedge clk_i) begin
         if (!rst_ni) begin
-          sub_q <= '0;
-        end else if (lane_take[i]) begin
-          sub_q <= sub_q + 1'b1;
+          sub_q     <= '0;
+          a_valid_q <= 1'b0;
+          h_valid_q <= 1'b0;
+        end else begin
+          if (lane_take[i]) sub_q <= sub_q + 1'b1;
+          if (f_pop) a_valid_q <= 1'b1;
+          else if (a_pop) a_valid_q <= 1'b0;
+          if (a_pop) h_valid_q <= 1'b1;
+          else if (h_pop) h_valid_q <= 1'b0;
         end
+      end
+      always_ff @(posedge clk_i) begin
+        if (f_pop) a_data_q <= f_data;
+        if (a_pop) h_data_q <= a_data_q;
       end
     end
   end
@@ -433,25 +454,31 @@ module scw_labelling #(
     localparam int unsigned Borders = Lanes - 1;
     localparam int unsigned QCntW = $clog2(BorderQueue + 1);
     localparam int unsigned PushW = $clog2(Borders + 1);
-    logic active_q, b1_valid_q, b_read;
+    // B0 reads row_q at both sides of every border (and clears it for the next frame); B1 has
+    // the words in the RAMs' read registers and passes them through a second register (the
+    // block RAM's output register: its clock-to-output without it, about 2.5 ns, left no time
+    // for the join); B2 forms the join's multiples and the edge; B3 compares and drops a repeat
+    // of the border's last edge; B4 packs the pushes into the queue.
+    logic active_q, b1_valid_q, b2_valid_q, b3_valid_q, b4_valid_q, b_read;
     logic [YW-1:0] row_q;
     logic [Borders-1:0] last_has_q;
     logic [Borders*NodeW-1:0] last_a_q, last_b_q;
-    logic [Borders*BordW-1:0] right_rd, left_rd;  // border b: lane b's last, lane b + 1's first
-    logic [Borders-1:0] joined;
+    logic [Borders-1:0] b4_push_q;  // B4: border b's edge, if any
+    logic [Borders*NodeW-1:0] b4_a_q, b4_b_q;
     logic [QCntW-1:0] q_count;
     logic q_room;
     logic [PushW-1:0] push_n;
     logic [Borders*NodeW-1:0] push_a, push_b;
-    logic [Borders-1:0] push;
     logic uf_idle;
     logic [16:0] measure_q;
     logic [LaneSW-1:0] measure_k_q;
     logic unused_border;  // the first strip has no left border, the last no right
-    assign unused_border = lane_left_we[0] ^ lane_right_we[Lanes-1];
+    // (and lane 0 starts at column 0: its x0_q stays 0, a constant for synthesis)
+    assign unused_border = lane_left_we[0] ^ lane_right_we[Lanes-1] ^ (|x0_q[15:0]);
 
     assign b_read      = ph_border && active_q && q_room;
-    assign border_done = !active_q && !b1_valid_q && (q_count == '0) && uf_idle;
+    assign border_done = !active_q && !b1_valid_q && !b2_valid_q && !b3_valid_q && !b4_valid_q &&
+                         (q_count == '0) && uf_idle;
 
     for (genvar b = 0; b < Borders; b++) begin : gen_ram
       logic [BordW-1:0] lp, rp;
@@ -505,62 +532,83 @@ module scw_labelling #(
         .rd_data_o(rp)
       );
 
-      // B1: the left strip's last pixel and the right strip's first (the later) join:
-      // 10 |d_cur - d_nb| < d_cur (hls::labelling::joins), 10 x = 8 x + 2 x.
-      logic j;
-      logic [15:0] bdiff;
-      logic [19:0] bten;
-      logic [NodeW-1:0] ea, eb;
-      assign bdiff = (rp[15:0] >= lp[15:0]) ? rp[15:0] - lp[15:0] : lp[15:0] - rp[15:0];
-      assign bten  = {1'b0, bdiff, 3'b000} + {3'b000, bdiff, 1'b0};
-      assign j     = bten < {4'b0000, rp[15:0]};
-      assign ea        = NodeW'(lp[BordW-1:16] - 1'b1);
-      assign eb        = NodeW'(rp[BordW-1:16] - 1'b1);
-      assign joined[b] = b1_valid_q && (lp[BordW-1:16] != '0) && (rp[BordW-1:16] != '0) && j;
-      // an edge equal to this border's last is dropped
-      assign push[b]   = joined[b] && !(last_has_q[b] && last_a_q[b*NodeW +: NodeW] == ea &&
-                                        last_b_q[b*NodeW +: NodeW] == eb);
-      assign right_rd[b*BordW +: BordW] = lp;
-      assign left_rd[b*BordW +: BordW]  = rp;
+      // B1: the left strip's last pixel (lp, the neighbour) and the right strip's first (rp,
+      // the later pixel), through the output register.
+      logic [BordW-1:0] lp_q, rp_q;
+      always_ff @(posedge clk_i) begin
+        lp_q <= lp;
+        rp_q <= rp;
+      end
+
+      // B2: 10 |d - d_nb| < d (hls::labelling::joins) is 9 d < 10 d_nb < 11 d in integers
+      // (10 (d - d_nb) < d and -d < 10 (d - d_nb)), as the lanes test it: the multiples here,
+      // the compares in B3. The edge (lp's node, rp's node) when both are object pixels.
+      logic [19:0] d9_q, d11_q, nb10_q;
+      logic both_q;
+      logic [NodeW-1:0] ea_q, eb_q;
+      always_ff @(posedge clk_i) begin
+        d9_q   <= {1'b0, rp_q[15:0], 3'b000} + {4'b0000, rp_q[15:0]};
+        d11_q  <= {1'b0, rp_q[15:0], 3'b000} + {3'b000, rp_q[15:0], 1'b0} +
+                  {4'b0000, rp_q[15:0]};
+        nb10_q <= {1'b0, lp_q[15:0], 3'b000} + {3'b000, lp_q[15:0], 1'b0};
+        both_q <= (lp_q[BordW-1:16] != '0) && (rp_q[BordW-1:16] != '0);
+        ea_q   <= NodeW'(lp_q[BordW-1:16] - 1'b1);
+        eb_q   <= NodeW'(rp_q[BordW-1:16] - 1'b1);
+      end
+
+      // B3: they join; an edge equal to this border's last is dropped.
+      logic joined, push;
+      assign joined = b3_valid_q && both_q && (nb10_q > d9_q) && (nb10_q < d11_q);
+      assign push   = joined && !(last_has_q[b] && last_a_q[b*NodeW +: NodeW] == ea_q &&
+                                  last_b_q[b*NodeW +: NodeW] == eb_q);
 
       always_ff @(posedge clk_i) begin
         if (!rst_ni) begin
           last_has_q[b] <= 1'b0;
-        end else if (frame_end) begin
-          last_has_q[b] <= 1'b0;
-        end else if (push[b]) begin
-          last_has_q[b] <= 1'b1;
+          b4_push_q[b]  <= 1'b0;
+        end else begin
+          b4_push_q[b] <= push;
+          if (frame_end) begin
+            last_has_q[b] <= 1'b0;
+          end else if (push) begin
+            last_has_q[b] <= 1'b1;
+          end
         end
       end
       always_ff @(posedge clk_i) begin
-        if (push[b]) begin
-          last_a_q[b*NodeW +: NodeW] <= ea;
-          last_b_q[b*NodeW +: NodeW] <= eb;
+        if (push) begin
+          last_a_q[b*NodeW +: NodeW] <= ea_q;
+          last_b_q[b*NodeW +: NodeW] <= eb_q;
         end
+        b4_a_q[b*NodeW +: NodeW] <= ea_q;
+        b4_b_q[b*NodeW +: NodeW] <= eb_q;
       end
     end
 
-    // The pushes in border order, packed from push 0.
+    // B4: the pushes in border order, packed from push 0: border b's edge goes to push k when k
+    // borders before it push (constant part-selects, so each push is a small OR of selects).
     always_comb begin
-      push_n = '0;
+      logic [PushW-1:0] ahead;
       push_a = '0;
       push_b = '0;
+      ahead = '0;
       for (int b = 0; b < Borders; b++) begin
-        if (push[b]) begin
-          push_a[32'(push_n)*NodeW +: NodeW] =
-              NodeW'(right_rd[b*BordW+16 +: N1W] - 1'b1);
-          push_b[32'(push_n)*NodeW +: NodeW] =
-              NodeW'(left_rd[b*BordW+16 +: N1W] - 1'b1);
-          push_n = push_n + 1'b1;
+        for (int k = 0; k <= b; k++) begin
+          if (b4_push_q[b] && ahead == PushW'(k)) begin
+            push_a[k*NodeW +: NodeW] = push_a[k*NodeW +: NodeW] | b4_a_q[b*NodeW +: NodeW];
+            push_b[k*NodeW +: NodeW] = push_b[k*NodeW +: NodeW] | b4_b_q[b*NodeW +: NodeW];
+          end
         end
+        ahead = ahead + PushW'(b4_push_q[b]);
       end
+      push_n = ahead;
     end
 
     scw_labelling_merge_unit #(
       .Nodes  (NodeSpace),
       .Depth  (BorderQueue),
       .MaxPush(Borders),
-      .Room   (2 * Borders)
+      .Room   (BorderRows * Borders)
     ) u_merge_unit (
       .clk_i,
       .rst_ni,
@@ -583,9 +631,15 @@ module scw_labelling #(
       if (!rst_ni) begin
         active_q   <= 1'b0;
         b1_valid_q <= 1'b0;
+        b2_valid_q <= 1'b0;
+        b3_valid_q <= 1'b0;
+        b4_valid_q <= 1'b0;
         row_q      <= '0;
       end else begin
         b1_valid_q <= b_read;
+        b2_valid_q <= b1_valid_q;
+        b3_valid_q <= b2_valid_q;
+        b4_valid_q <= b3_valid_q;
         if (drained) begin
           active_q <= 1'b1;
           row_q    <= '0;
@@ -597,17 +651,31 @@ module scw_labelling #(
     end
 
     // Init: the strips. A tile column a clock while they do not cover the width; every Lanes-th
-    // adds a tile to the strip, so strip_q = tile_w x floor(tile columns / Lanes).
+    // adds a tile to the strip, so strip_q = tile_w x floor(tile columns / Lanes), and i tiles
+    // to lane i's first column (a product of strip_q, through a DSP without registers, took
+    // 4 ns). Both are final in the same clock; the lanes take x0 into their first-column powers
+    // from there. The last strip's width follows a clock later: the lanes use it from the first
+    // frame on, and Init lasts at least MaxTilesX + 8 clocks.
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         measure_q   <= '0;
         measure_k_q <= '0;
         strip_q     <= '0;
+        x0_q        <= '0;
       end else if (ph_init && measure_q < {1'b0, cfg_width_i}) begin
         measure_q   <= measure_q + {1'b0, cfg_tile_w_i};
         measure_k_q <= measure_k_q + 1'b1;
-        if (measure_k_q == LaneSW'(Lanes - 1)) strip_q <= strip_q + cfg_tile_w_i;
+        if (measure_k_q == LaneSW'(Lanes - 1)) begin
+          strip_q <= strip_q + cfg_tile_w_i;
+          for (int i = 1; i < Lanes; i++) begin  // i x tile_w as shifts (i < 4)
+            x0_q[i*16 +: 16] <= x0_q[i*16 +: 16] + ((i % 2 == 1) ? cfg_tile_w_i : 16'd0) +
+                                ((i / 2 % 2 == 1) ? {cfg_tile_w_i[14:0], 1'b0} : 16'd0);
+          end
+        end
       end
+    end
+    always_ff @(posedge clk_i) begin
+      last_w_q <= cfg_width_i - x0_q[(Lanes-1)*16 +: 16];
     end
   end
 

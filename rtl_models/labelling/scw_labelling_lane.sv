@@ -317,6 +317,7 @@ module scw_labelling_lane #(
   // (x0 v, x0^2 v, (2 x0 + 1) v, x0 v^2, x0 (2 v + 1)) stepped by one row. While !en_i they hold
   // the frame's first pixel. Sums wrap at their widths, which hold every true value, so they
   // stay exact.
+  localparam int unsigned SqW  = 2 * PosXW;  // x0^2 < 2^SqW (and SqW <= M20W: (W-1)^2 <= S2(W))
   localparam int unsigned D2W  = PosXW + 1;
   localparam int unsigned D3W  = 2 * PosXW + 2;
   localparam int unsigned DD3W = PosXW + 3;
@@ -330,7 +331,7 @@ module scw_labelling_lane #(
   logic [PosXW-1:0] c_x0_q, c_a_q, c_b_q;
   logic [M20W-1:0] c_sq_m_q, c_sq_p_q, c_sq_q;
   logic [M30W-1:0] c_cu_m_q, c_cu_p_q, c_cu_q;
-  logic [M20W-1:0] c_sq_b_q;
+  logic [SqW-1:0] c_sq_b_q;  // at its width: the cube is one DSP (22 x 11 bits at 1280 px)
   logic [D2W-1:0] c_d2_q;
   logic [D3W-1:0] c_d3_q, c_3sq_q, c_3x1_q;
   logic [DD3W-1:0] c_dd3_q;
@@ -341,7 +342,7 @@ module scw_labelling_lane #(
     c_sq_m_q <= M20W'(c_a_q) * M20W'(c_a_q);
     c_sq_p_q <= c_sq_m_q;
     c_sq_q   <= c_sq_p_q;
-    c_sq_b_q <= c_sq_q;
+    c_sq_b_q <= SqW'(c_sq_q);
     c_b_q    <= c_x0_q;
     c_cu_m_q <= M30W'(c_sq_b_q) * M30W'(c_b_q);
     c_cu_p_q <= c_cu_m_q;
