@@ -69,6 +69,7 @@ module scw_disparity #(
   localparam int unsigned Cols      = MaxWidthPx / Ppc;
   localparam int unsigned ColW      = (Cols > 1) ? $clog2(Cols) : 1;
   localparam int unsigned SlotW     = $clog2(Window + 1);
+  localparam int unsigned LbAW      = $clog2((Window + 1) * Cols);  // line-buffer address
   localparam int unsigned SadBits   = $clog2(Window * Window * 255 + 1);
   // Latencies, each the twin of a C++ constant (checked by the RTL test at compile time):
   // XSobel::kReadLatency, front_latency(Ppc), decide_latency(NumDisp) (a register after every
@@ -95,7 +96,7 @@ module scw_disparity #(
   end
 
   // ---- configuration ---------------------------------------------------------------------
-  logic [ColW-1:0] last_col_q;
+  logic [ColW-1:0] last_col_q, last_col_m1_q;
   logic [HW-1:0] last_row_q, height_q;
   logic [WW-1:0] dmin_q, width_q;
   logic [NumW-1:0] num_q;
@@ -105,7 +106,10 @@ module scw_disparity #(
   // Per lane i, what a word column must be for lane i to hold a decision (region) or a
   // computed output (right edge), one less, as the next word's tests are made on this one:
   // col + 1 >= ceil((fvr - i) / P) and col + 1 < ceil((W - R - i) / P).
-  logic [Ppc*XW-1:0] rcm_q, ocm_q;
+  // ocm in ColW + 1 bits: at most Cols - 1, or all ones when oc is 0 (never below any column)
+  localparam int unsigned OcW = ColW + 1;
+  logic [Ppc*XW-1:0] rcm_q;
+  logic [Ppc*OcW-1:0] ocm_q;
   logic [Ppc-1:0] rz_q, oz_q;  // the same tests for word column 0
   for (genvar i = 0; i < Ppc; i++) begin : gen_lane_cfg
     logic [XW-1:0] rc, oc;
@@ -113,7 +117,7 @@ module scw_disparity #(
     assign oc = (XW'(width_q) - XW'(R) + XW'(Ppc - 1 - i)) >> $clog2(Ppc);
     always_ff @(posedge clk_i) begin
       rcm_q[i*XW +: XW] <= rc - 1'b1;
-      ocm_q[i*XW +: XW] <= oc - 1'b1;
+      ocm_q[i*OcW +: OcW] <= OcW'(oc - 1'b1);
       rz_q[i]           <= rc == '0;
       oz_q[i]           <= oc != '0;
     end
@@ -124,6 +128,7 @@ module scw_disparity #(
     width_q       <= cfg_width_i;
     height_q      <= cfg_height_i;
     last_col_q    <= ColW'((cfg_width_i >> $clog2(Ppc)) - 1'b1);
+    last_col_m1_q <= ColW'((cfg_width_i >> $clog2(Ppc)) - WW'(2));
     last_row_q    <= cfg_height_i - 1'b1;
     dmin_q        <= cfg_dmin_i;
     num_q         <= (cfg_num_disp_i == '0 || cfg_num_disp_i >= NumW'(NumDisp))
@@ -259,6 +264,12 @@ module scw_disparity #(
   logic [ColW-1:0] core_col_q;
   logic [HW-1:0] core_row_q;
   logic [SlotW-1:0] core_slot_q;
+  // The slot's and the leaving row's slot's line-buffer row addresses (slot * Cols), for the
+  // sums: from the slot, a register, into the delay line's first register.
+  logic [LbAW-1:0] core_base, core_old_base;
+  assign core_base     = LbAW'(core_slot_q) * LbAW'(Cols);
+  assign core_old_base = (core_slot_q == SlotW'(Window)) ? '0
+                                                         : core_base + LbAW'(Cols);
   logic [1:0] frames_ahead_q;  // frames the core has started and the reader has not
   // emit_q, region_q, n_emit_q describe the word at (core_col_q, core_row_q) and are formed
   // for the next word when one is issued, from registers: output pixel (x - R, y - R) exists
@@ -285,7 +296,11 @@ module scw_disparity #(
                                     : (XW'(core_col_q) + 1'b1 >= XW'((R + Ppc - 1 - i) / Ppc)));
       region_nx[i] = core_last_col ? rz_q[i]
                                    : $signed(XW'(core_col_q)) >= $signed(rcm_q[i*XW +: XW]);
-      n_emit_nx    = n_emit_nx + LnW'(emit_nx[i]);
+    end
+    // The emitted lanes are a suffix, so their count is Ppc minus the lowest lane set (a
+    // priority select, not an adder chain).
+    for (int i = Ppc - 1; i >= 0; i--) begin
+      if (emit_nx[i]) n_emit_nx = LnW'(Ppc - i);
     end
   end
 
@@ -325,7 +340,7 @@ module scw_disparity #(
 
   // The core sees a beat PfLatency cycles after its issue: the prefilter's read, or as long a
   // delay of the raw pair, so both modes share one latency.
-  localparam int unsigned InfoW = 2 * Ppc + SlotW + HW + ColW;
+  localparam int unsigned InfoW = 2 * Ppc + 2 * LbAW + HW + ColW;
   logic [PfLatency-1:0] dly_valid_q;
   logic [PfLatency*InfoW-1:0] dly_info_q;
   logic [PfLatency*2*BeatW-1:0] dly_raw_q;
@@ -335,7 +350,7 @@ module scw_disparity #(
       else dly_valid_q <= issue;
     end
     always_ff @(posedge clk_i) begin
-      dly_info_q <= {emit, region, core_slot_q, core_row_q, core_col_q};
+      dly_info_q <= {emit, region, core_base, core_old_base, core_row_q, core_col_q};
       dly_raw_q  <= {have_r, have_l};
     end
   end else begin : gen_dly
@@ -347,7 +362,8 @@ module scw_disparity #(
     // whose slow clock-to-out would start the sums' address arithmetic.
     always_ff @(posedge clk_i) begin
       if (issue) begin
-        dly_info_q[InfoW-1:0]   <= {emit, region, core_slot_q, core_row_q, core_col_q};
+        dly_info_q[InfoW-1:0]   <= {emit, region, core_base, core_old_base, core_row_q,
+                                    core_col_q};
         dly_raw_q[2*BeatW-1:0]  <= {have_r, have_l};
       end
     end
@@ -363,12 +379,13 @@ module scw_disparity #(
 
   logic c_valid;
   logic [Ppc-1:0] c_emit, c_region;
-  logic [SlotW-1:0] c_slot;
+  logic [LbAW-1:0] c_base, c_old_base;
   logic [HW-1:0] c_row;
   logic [ColW-1:0] c_col;
   logic [BeatW-1:0] c_left, c_right, raw_l, raw_r;
   assign c_valid = dly_valid_q[PfLatency-1];
-  assign {c_emit, c_region, c_slot, c_row, c_col} = dly_info_q[(PfLatency-1)*InfoW +: InfoW];
+  assign {c_emit, c_region, c_base, c_old_base, c_row, c_col} =
+      dly_info_q[(PfLatency-1)*InfoW +: InfoW];
   assign {raw_r, raw_l} = dly_raw_q[(PfLatency-1)*2*BeatW +: 2*BeatW];
   assign c_left  = prefilter_q ? pf_l_data : raw_l;
   assign c_right = prefilter_q ? pf_r_data : raw_r;
@@ -383,7 +400,8 @@ module scw_disparity #(
     .NumDisp(NumDisp), .TagBits(2 * Ppc)
   ) u_sums (
     .clk_i, .rst_ni, .cfg_dmin_i(dmin_q), .cfg_cap_i,
-    .valid_i(c_valid), .col_i(c_col), .row_i(c_row), .slot_i(c_slot),
+    .valid_i(c_valid), .col_i(c_col), .row_i(c_row), .base_i(c_base),
+    .old_base_i(c_old_base),
     .left_i(c_left), .right_i(c_right), .tag_i({c_emit, c_region}),
     .valid_o(s_valid), .sad_o(s_sad), .texture_o(s_tex), .tag_o(s_tag)
   );
@@ -468,19 +486,29 @@ module scw_disparity #(
   logic [Ppc-1:0] lanes_q, lanes_nx;
   logic [LnW-1:0] n_out_q, n_out_nx;
   logic row_comp_q, row_comp_nx, out_first_q, out_last_col, out_last_row;
-  assign out_last_col = out_col_q == last_col_q;
+  // out_last_col_q: out_col_q == last_col_q, kept beside the column on a read (rows are at
+  // least 3 words wide, see the sums, so column 0 is never the last). row_after_q: whether
+  // the row after out_row_q is computed, a function of out_row_q alone, registered every clock;
+  // it is read only at a row's last word, at least 2 clocks after the row changed, so it is
+  // never stale. The next word's lanes then start at registers rather than behind the row and
+  // column compares.
+  logic out_last_col_q, row_after_q;
+  assign out_last_col = out_last_col_q;
   assign out_last_row = out_row_q == last_row_q;
   /* verilator lint_off UNSIGNED */
-  assign row_comp_nx  = !out_last_col ? row_comp_q
-                      : !out_last_row && (out_row_q >= HW'(R - 1)) &&
-                        (XW'(out_row_q) < hrm_q);
+  always_ff @(posedge clk_i) begin
+    row_after_q <= !out_last_row && (out_row_q >= HW'(R - 1)) && (XW'(out_row_q) < hrm_q);
+  end
   /* verilator lint_on UNSIGNED */
+  assign row_comp_nx = out_last_col ? row_after_q : row_comp_q;
+  // The lanes are a prefix, so their count is the highest lane set plus one (a priority
+  // select, not an adder chain).
   always_comb begin
     n_out_nx = '0;
     for (int i = 0; i < Ppc; i++) begin
       lanes_nx[i] = row_comp_nx && (out_last_col ? oz_q[i]
-                                                 : XW'(out_col_q) < ocm_q[i*XW +: XW]);
-      n_out_nx    = n_out_nx + LnW'(lanes_nx[i]);
+                                                 : {1'b0, out_col_q} < ocm_q[i*OcW +: OcW]);
+      if (lanes_nx[i]) n_out_nx = LnW'(i + 1);
     end
   end
   assign read_fs = read && out_first_q;
@@ -501,6 +529,7 @@ module scw_disparity #(
       out_col_q   <= '0;
       out_row_q   <= '0;
       out_first_q <= 1'b1;
+      out_last_col_q <= 1'b0;
       row_comp_q  <= 1'b0;
       lanes_q     <= '0;
       n_out_q     <= '0;
@@ -519,11 +548,12 @@ module scw_disparity #(
         row_comp_q  <= row_comp_nx;
         lanes_q     <= lanes_nx;
         n_out_q     <= n_out_nx;
-        if (out_col_q != last_col_q) begin
+        out_last_col_q <= !out_last_col && (out_col_q == last_col_m1_q);
+        if (!out_last_col) begin
           out_col_q <= out_col_q + 1'b1;
         end else begin
           out_col_q <= '0;
-          out_row_q <= (out_row_q == last_row_q) ? '0 : out_row_q + 1'b1;
+          out_row_q <= out_last_row ? '0 : out_row_q + 1'b1;
         end
       end
       tail_q      <= tail_q + QW'(n_in);
@@ -536,7 +566,9 @@ module scw_disparity #(
 
   // [{issue, read}]: the count's next value and whether it leaves room for Ppc more results,
   // count + e - o <= Queue - Ppc, that is le[Ppc + o - e] with le[k] = count <= Queue - 2 Ppc + k:
-  // compares against constants, picked by the small e and o.
+  // compares against constants, picked by the small e and o. The pick is an AND-OR with a
+  // one-hot index: each index bit is a function of the two small registered counts alone (one
+  // LUT), where an adder and a 2 Ppc + 1-way select by its sum were the stage's worst path.
   logic [QCW-1:0] cnt_nx [4];
   logic [3:0] room_nx;
   logic [2*Ppc:0] le;
@@ -547,11 +579,19 @@ module scw_disparity #(
   for (genvar c = 0; c < 4; c++) begin : gen_cnt
     localparam bit Iss = c[1];
     localparam bit Rd  = c[0];
-    logic [LnW:0] idx;
+    // pick[k]: Ppc + o - e == k, as equalities of the counts with constants (no adder).
+    logic [2*Ppc:0] pick;
+    always_comb begin
+      pick = '0;
+      for (int e = 0; e <= (Iss ? Ppc : 0); e++) begin
+        for (int o = 0; o <= (Rd ? Ppc : 0); o++) begin
+          if ((!Iss || n_emit_q == LnW'(e)) && (!Rd || n_out_q == LnW'(o)))
+            pick[Ppc + o - e] = 1'b1;
+        end
+      end
+    end
     assign cnt_nx[c]  = count_q + (Iss ? QCW'(n_emit_q) : '0) - (Rd ? QCW'(n_out_q) : '0);
-    assign idx        = (LnW + 1)'(Ppc) + (Rd ? (LnW + 1)'(n_out_q) : '0) -
-                        (Iss ? (LnW + 1)'(n_emit_q) : '0);
-    assign room_nx[c] = le[idx];
+    assign room_nx[c] = |(pick & le);
   end
   assign ready_nrd = ready_q + QCW'(n_in);
   assign ready_rd  = ready_q + QCW'(n_in) - QCW'(n_out_q);

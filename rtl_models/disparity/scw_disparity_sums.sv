@@ -39,7 +39,7 @@ module scw_disparity_sums #(
   localparam int unsigned WW      = $clog2(MaxWidthPx + 1),
   localparam int unsigned HW      = $clog2(MaxHeight + 1),
   localparam int unsigned Slots   = Window + 1,
-  localparam int unsigned SlotW   = $clog2(Slots),
+  localparam int unsigned LbAW    = $clog2(Slots * Cols),
   localparam int unsigned ColBits = $clog2(Window * 255 + 1),
   localparam int unsigned SadBits = $clog2(Window * Window * 255 + 1)
 ) (
@@ -48,11 +48,16 @@ module scw_disparity_sums #(
   // static configuration (registered by the parent)
   input  logic [WW-1:0]                   cfg_dmin_i,
   input  logic [5:0]                      cfg_cap_i,
-  // one beat pair at word col_i of row row_i, kept in line-buffer slot slot_i = row % (N + 1)
+  // one beat pair at word col_i of row row_i, kept in line-buffer slot s = row % (N + 1):
+  // base_i = s * Cols, old_base_i = ((s + 1) % (N + 1)) * Cols (row y - N), the line buffers'
+  // row addresses, formed by the parent where the slot changes (once a row), so that the
+  // read address is one add behind a register rather than a slot increment, a multiply by
+  // Cols and an add (the stage's worst path at P = 4)
   input  logic                            valid_i,
   input  logic [ColW-1:0]                 col_i,
   input  logic [HW-1:0]                   row_i,
-  input  logic [SlotW-1:0]                slot_i,
+  input  logic [LbAW-1:0]                 base_i,
+  input  logic [LbAW-1:0]                 old_base_i,
   input  logic [BeatW-1:0]                left_i,
   input  logic [BeatW-1:0]                right_i,
   input  logic [TagBits-1:0]              tag_i,
@@ -67,7 +72,6 @@ module scw_disparity_sums #(
   localparam int unsigned Latency /*verilator public*/ = 7 + PreStages;
   /* verilator lint_on UNUSEDPARAM */
   localparam int unsigned LbDepth = Slots * Cols;
-  localparam int unsigned LbAW    = $clog2(LbDepth);
   localparam int unsigned LbSlice = (LbAW >= 15) ? 1 : (32768 >> LbAW);  // bits a slice
   localparam int unsigned PpcLog  = (Ppc > 1) ? $clog2(Ppc) : 1;
   localparam int unsigned HistPx  = NumDisp - 1;     // right pixels kept from earlier beats
@@ -97,15 +101,13 @@ module scw_disparity_sums #(
   end
 
   // ---- c0: line buffers ------------------------------------------------------------------
-  logic [SlotW-1:0] old_slot;
   logic [ColW-1:0] col_back;
   logic [LbAW-1:0] wr_addr, old_addr, old_back_addr;
-  assign old_slot      = (slot_i == SlotW'(Window)) ? '0 : slot_i + 1'b1;  // row y - N
   // Left of column 0 it wraps to some other word: those pixels are masked, whatever they are.
   assign col_back      = col_i - back_words_q;
-  assign wr_addr       = LbAW'(slot_i) * LbAW'(Cols) + LbAW'(col_i);
-  assign old_addr      = LbAW'(old_slot) * LbAW'(Cols) + LbAW'(col_i);
-  assign old_back_addr = LbAW'(old_slot) * LbAW'(Cols) + LbAW'(col_back);
+  assign wr_addr       = base_i + LbAW'(col_i);
+  assign old_addr      = old_base_i + LbAW'(col_i);
+  assign old_back_addr = old_base_i + LbAW'(col_back);
 
   logic [BeatW-1:0] lold_rd, rold_rd, rdel_rd;
   // The line buffers are cut into bit slices of LbSlice bits, each as deep as a block RAM of
