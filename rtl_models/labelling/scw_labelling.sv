@@ -233,9 +233,12 @@ module scw_labelling #(
   logic [XW-1:0] xn, lane_coln;
   logic [YW-1:0] y1;
   logic x_wrap;
-  logic [Lanes-1:0] fifo_ready, fifo_valid;
+  logic [Lanes-1:0] fifo_room_q, fifo_valid;
 
-  assign room        = (Lanes == 1) ? lane_can_take[0] : fifo_ready[in_frame ? lane_q : '0];
+  // With lanes, the room of the beat's lane FIFO comes from a register per lane (the FIFO's own
+  // in_ready, formed a clock early from its count, push and pop): the FIFO's count against full
+  // no longer stands between one FIFO's count and the next one's push.
+  assign room        = (Lanes == 1) ? lane_can_take[0] : fifo_room_q[in_frame ? lane_q : '0];
   assign in_ready_o  = ph_frame && room && !(in_frame && in_sof_i);
   assign take        = in_valid_i && in_ready_o;
   assign sof_mid     = ph_frame && in_frame && in_valid_i && in_sof_i;
@@ -300,7 +303,7 @@ module scw_labelling #(
   if (Lanes == 1) begin : gen_one_lane
     assign lane_take     = beat_in;
     assign lane_px       = in_data_i;
-    assign fifo_ready    = 1'b0;
+    assign fifo_room_q   = 1'b0;
     assign fifo_valid    = 1'b0;
     assign strip_q       = cfg_width_i;
     assign x0_q          = '0;
@@ -314,7 +317,8 @@ module scw_labelling #(
       logic f_valid, f_pop, a_valid_q, a_pop, h_valid_q, h_pop;
       logic [16*Lanes-1:0] f_data, a_data_q, h_data_q;
       logic [LaneSW-1:0] sub_q;
-      logic f_push;
+      logic f_push, f_full_next;
+      logic [$clog2(LaneFifo + 1)-1:0] f_count;
 
       // The lane takes its pixels from a head register that the FIFO fills through one more
       // (A, then H): the FIFO's memory is a block RAM, and synthesis makes A its read register
@@ -335,14 +339,24 @@ module scw_labelling #(
         .clk_i,
         .rst_ni,
         .in_valid_i (f_push),
-        .in_ready_o (fifo_ready[i]),
+        .in_ready_o (),
         .in_data_i  (in_data_i),
         .out_valid_o(f_valid),
         .out_ready_i(f_pop),
         .out_data_o (f_data),
-        .count_o    ()
+        .count_o    (f_count)
       );
       /* verilator lint_on PINCONNECTEMPTY */
+
+      // The FIFO is full next clock when it is full now and nothing leaves, or one short and a
+      // beat enters while nothing leaves (a beat enters only with room): fifo_room_q[i] equals the
+      // FIFO's in_ready every clock.
+      assign f_full_next = !f_pop && ((f_count == LaneFifo) ||
+                                      ((f_count == LaneFifo - 1) && f_push));
+      always_ff @(posedge clk_i) begin
+        if (!rst_ni) fifo_room_q[i] <= 1'b1;
+        else fifo_room_q[i] <= !f_full_next;
+      end
 
       // The head register, and the pixel of it the lane takes next.
       always_ff @(posedge clk_i) begin
