@@ -15,6 +15,12 @@ inline constexpr double kRoutingAllowance = 1.0;
 /// every module against it (rtl_models/CMakeLists.txt reads this number).
 inline constexpr int kStaBudgetPs = 3500;
 
+/// The scw_pipeline top does not meet kStaBudgetPs yet (docs/timing.md): 3,517 ps at its default
+/// build, a path inside the labelling stage's merge that the flattened top maps 400 ps longer than
+/// the stage alone (3,100 ps). Its CI guard holds it at this ceiling so that it cannot get worse;
+/// it is not a goal, and the top joins kStaBudgetPs when that path is closed.
+inline constexpr int kTopStaCeilingPs = 3600;
+
 /// Estimated Fmax in MHz of a path with `logic_ps` of cell delay.
 inline double fmax_mhz_est(double logic_ps) {
   return logic_ps > 0 ? 1.0e6 / (logic_ps * (1.0 + kRoutingAllowance)) : 0.0;
