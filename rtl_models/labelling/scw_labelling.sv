@@ -233,12 +233,13 @@ module scw_labelling #(
   logic [XW-1:0] xn, lane_coln;
   logic [YW-1:0] y1;
   logic x_wrap;
-  logic [Lanes-1:0] fifo_room_q, fifo_valid;
+  logic [Lanes-1:0] fifo_room_d, fifo_valid;
+  logic room_q;
 
-  // With lanes, the room of the beat's lane FIFO comes from a register per lane (the FIFO's own
-  // in_ready, formed a clock early from its count, push and pop): the FIFO's count against full
-  // no longer stands between one FIFO's count and the next one's push.
-  assign room        = (Lanes == 1) ? lane_can_take[0] : fifo_room_q[in_frame ? lane_q : '0];
+  // With lanes, the room of the next beat's lane FIFO is a register (the FIFO's in_ready, formed
+  // a clock early from each FIFO's count, push and pop and picked by the next clock's lane): no
+  // count compare or choice by lane stands between the registers and the lane FIFO's push.
+  assign room        = (Lanes == 1) ? lane_can_take[0] : room_q;
   assign in_ready_o  = ph_frame && room && !(in_frame && in_sof_i);
   assign take        = in_valid_i && in_ready_o;
   assign sof_mid     = ph_frame && in_frame && in_valid_i && in_sof_i;
@@ -303,7 +304,8 @@ module scw_labelling #(
   if (Lanes == 1) begin : gen_one_lane
     assign lane_take     = beat_in;
     assign lane_px       = in_data_i;
-    assign fifo_room_q   = 1'b0;
+    assign fifo_room_d   = 1'b0;
+    assign room_q        = 1'b0;
     assign fifo_valid    = 1'b0;
     assign strip_q       = cfg_width_i;
     assign x0_q          = '0;
@@ -311,7 +313,7 @@ module scw_labelling #(
     assign lane_x0       = x0_q;
     assign lane_width    = last_w_q;
     logic unused_border;  // one strip: no borders
-    assign unused_border = ^{lane_left_we, lane_right_we, lane_brow, lane_bword};
+    assign unused_border = ^{lane_left_we, lane_right_we, lane_brow, lane_bword, fifo_room_d, room_q};
   end else begin : gen_fifos
     for (genvar i = 0; i < Lanes; i++) begin : gen_fifo
       logic f_valid, f_pop, a_valid_q, a_pop, h_valid_q, h_pop;
@@ -349,14 +351,11 @@ module scw_labelling #(
       /* verilator lint_on PINCONNECTEMPTY */
 
       // The FIFO is full next clock when it is full now and nothing leaves, or one short and a
-      // beat enters while nothing leaves (a beat enters only with room): fifo_room_q[i] equals the
-      // FIFO's in_ready every clock.
+      // beat enters while nothing leaves (a beat enters only with room): fifo_room_d[i] is the
+      // FIFO's in_ready next clock.
       assign f_full_next = !f_pop && ((f_count == LaneFifo) ||
                                       ((f_count == LaneFifo - 1) && f_push));
-      always_ff @(posedge clk_i) begin
-        if (!rst_ni) fifo_room_q[i] <= 1'b1;
-        else fifo_room_q[i] <= !f_full_next;
-      end
+      assign fifo_room_d[i] = !f_full_next;
 
       // The head register, and the pixel of it the lane takes next.
       always_ff @(posedge clk_i) begin
@@ -376,6 +375,15 @@ module scw_labelling #(
         if (f_pop) a_data_q <= f_data;
         if (a_pop) h_data_q <= a_data_q;
       end
+    end
+  end
+
+  if (Lanes > 1) begin : gen_room
+    // The lane of the next beat: lane_d, or lane 0 outside a frame (as room reads lane_q then).
+    // After reset every FIFO is empty.
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) room_q <= 1'b1;
+      else room_q <= fifo_room_d[in_frame_d ? lane_d : '0];
     end
   end
 
