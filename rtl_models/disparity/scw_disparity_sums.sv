@@ -282,13 +282,20 @@ module scw_disparity_sums #(
   end
 
   // ---- column-sum RAMs: read in c2 (output register in c3), written in c4 -----------------
+  // A block RAM is at most 72 bits wide, so the words past a power of two take as many block
+  // RAMs as that power's half would: at 1,280 columns x 585 bits, 24.5 RAMB36 where 1,024
+  // words need 16.5. When the rest is at most a quarter of a block part of 512 words or more
+  // (P = 1 and 2 at 1,280 px), it is kept in LUT RAM (scw_ram_sdp's BlockDepth; docs/disparity.md).
+  localparam int unsigned ColsPow2  = (Cols > 1) ? (1 << ($clog2(Cols) - 1)) : 1;
+  localparam int unsigned ColsBlock = (ColsPow2 >= 512 && Cols - ColsPow2 <= ColsPow2 / 4 &&
+                                       Cols > ColsPow2) ? ColsPow2 : Cols;
   logic [CW-1:0] csum_rd, csum_rd_q, csum_d, csum_q;
   logic [Ppc*ColBits-1:0] tsum_rd, tsum_rd_q, tsum_d, tsum_q;
-  scw_ram_sdp #(.Width(CW), .Depth(Cols)) u_col_sums (
+  scw_ram_sdp #(.Width(CW), .Depth(Cols), .BlockDepth(ColsBlock)) u_col_sums (
     .clk_i, .wr_en_i(v_q[4]), .wr_addr_i(col4_q), .wr_data_i(csum_d),
     .rd_en_i(v_q[2]), .rd_addr_i(col2_q), .rd_data_o(csum_rd)
   );
-  scw_ram_sdp #(.Width(Ppc * ColBits), .Depth(Cols)) u_texture_sums (
+  scw_ram_sdp #(.Width(Ppc * ColBits), .Depth(Cols), .BlockDepth(ColsBlock)) u_texture_sums (
     .clk_i, .wr_en_i(v_q[4]), .wr_addr_i(col4_q), .wr_data_i(tsum_d),
     .rd_en_i(v_q[2]), .rd_addr_i(col2_q), .rd_data_o(tsum_rd)
   );
