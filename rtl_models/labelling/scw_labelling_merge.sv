@@ -67,11 +67,10 @@ module scw_labelling_merge #(
   end
 
   always_comb begin
-    a_closest = (a.d_max > b.d_max) ||
-                ((a.d_max == b.d_max) &&
-                 ((a.closest_y < b.closest_y) ||
-                  ((a.closest_y == b.closest_y) && (a.closest_x < b.closest_x))));
-    a_first = (a.first_y < b.first_y) || ((a.first_y == b.first_y) && (a.first_x < b.first_x));
+    // Each order as one compare of the fields side by side (one carry chain in Resolve's loop
+    // through R4): the larger d_max, then the smaller closest y, then x; the first y, then x.
+    a_closest = {a.d_max, ~a.closest_y, ~a.closest_x} > {b.d_max, ~b.closest_y, ~b.closest_x};
+    a_first   = {a.first_y, a.first_x} < {b.first_y, b.first_x};
 
     o.area      = a.area + b.area;
     o.x_min     = (a.x_min < b.x_min) ? a.x_min : b.x_min;
