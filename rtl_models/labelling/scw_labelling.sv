@@ -220,7 +220,8 @@ module scw_labelling #(
   logic [Lanes*16-1:0] lane_px;
   logic [Lanes*YW-1:0] lane_brow;
   logic [Lanes*BordW-1:0] lane_bword;
-  logic [Lanes*PW-1:0] lane_par_rd;
+  logic [Lanes*PW-1:0] lane_par_rd, lane_bpar_rd;
+  logic [LNodeW-1:0] bpar_raddr;  // the border merge unit's read port (its node's low bits)
   logic [Lanes*DescW-1:0] lane_desc_rd;
   logic [Lanes*CntW-1:0] lane_count;
   logic [Lanes*16-1:0] lane_x0, lane_width;
@@ -260,17 +261,54 @@ module scw_labelling #(
   assign y1        = ye + 1'b1;
   // (against the configuration's last positions, registered: static while frames stream)
   logic [16:0] w_last_q, h_last_q, s_last_q;
+  logic [16:0] w_last_d, s_last_d;
+  assign w_last_d = {1'b0, cfg_width_i} - Ppb;
+  assign s_last_d = {1'b0, strip_q} - Ppb;
   always_ff @(posedge clk_i) begin
-    w_last_q <= {1'b0, cfg_width_i} - Ppb;
+    w_last_q <= w_last_d;
     h_last_q <= {1'b0, cfg_height_i} - 17'd1;
-    s_last_q <= {1'b0, strip_q} - Ppb;
+    s_last_q <= s_last_d;
   end
-  assign x_wrap_cont     = 17'(x_q) == w_last_q;
   assign x_wrap_start    = w_last_q == '0;
   assign y_last_cont     = 17'(y_q) == h_last_q;
   assign y_last_start    = h_last_q == '0;
-  assign strip_end_cont  = 17'(lane_col_q) == s_last_q;
   assign strip_end_start = s_last_q == '0;
+  // x_q == w_last_q and lane_col_q == s_last_q as registers: each compared a clock early for
+  // every value its counter may take next (see x_d, lane_col_d), picked as the counter is (the
+  // compares had stood before the next beat's lane and the pick of its FIFO's room)
+  // (x + P against the last position as x against the last but one, a compare with no adder)
+  logic x_wrap_next, strip_end_next, w_fits, s_fits;
+  logic [XW-1:0] w_prev_d, s_prev_d;
+  assign w_prev_d = XW'({1'b0, cfg_width_i} - {Ppb[15:0], 1'b0});
+  assign s_prev_d = XW'({1'b0, strip_q} - {Ppb[15:0], 1'b0});
+  // (last < 2^XW, as a range of the width against constants: no subtract before it)
+  localparam logic [16:0] FitsEnd = Ppb + (17'd1 << XW);
+  assign w_fits   = ({1'b0, cfg_width_i} >= Ppb) && ({1'b0, cfg_width_i} < FitsEnd);
+  assign s_fits   = ({1'b0, strip_q} >= Ppb) && ({1'b0, strip_q} < FitsEnd);
+  always_comb begin
+    x_wrap_next    = 17'(x_q) == w_last_d;
+    strip_end_next = 17'(lane_col_q) == s_last_d;
+    if (beat_in) begin
+      if (x_wrap) begin
+        x_wrap_next = w_last_d == '0;
+      end else if (frame_start) begin
+        x_wrap_next = 17'(XW'(Lanes)) == w_last_d;
+      end else begin
+        x_wrap_next = w_fits && (x_q == w_prev_d);
+      end
+      if (x_wrap || (frame_start ? strip_end_start : strip_end_cont)) begin
+        strip_end_next = s_last_d == '0;
+      end else if (frame_start) begin
+        strip_end_next = 17'(XW'(Lanes)) == s_last_d;
+      end else begin
+        strip_end_next = s_fits && (lane_col_q == s_prev_d);
+      end
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    x_wrap_cont    <= x_wrap_next;
+    strip_end_cont <= strip_end_next;
+  end
   assign x_wrap     = frame_start ? x_wrap_start : x_wrap_cont;
   assign frame_last = beat_in && x_wrap && (frame_start ? y_last_start : y_last_cont);
   assign eol_err    = beat_in && (in_eol_i != x_wrap);
@@ -353,8 +391,8 @@ module scw_labelling #(
       // The FIFO is full next clock when it is full now and nothing leaves, or one short and a
       // beat enters while nothing leaves (a beat enters only with room): fifo_room_d[i] is the
       // FIFO's in_ready next clock.
-      assign f_full_next = !f_pop && ((f_count == LaneFifo) ||
-                                      ((f_count == LaneFifo - 1) && f_push));
+      assign f_full_next = !f_pop && ((32'(f_count) == LaneFifo) ||
+                                      ((32'(f_count) == LaneFifo - 1) && f_push));
       assign fifo_room_d[i] = !f_full_next;
 
       // The head register, and the pixel of it the lane takes next.
@@ -438,6 +476,8 @@ module scw_labelling #(
       .par_waddr_i  (par_waddr),
       .par_wdata_i  (par_wdata),
       .par_rd_o     (lane_par_rd[i*PW +: PW]),
+      .bpar_raddr_i (bpar_raddr),
+      .bpar_rd_o    (lane_bpar_rd[i*PW +: PW]),
       .desc_re_i    (desc_re),
       .desc_raddr_i (r2_node_q),
       .desc_rd_o    (lane_desc_rd[i*DescW +: DescW]),
@@ -461,17 +501,18 @@ module scw_labelling #(
 
   // ---- Border (lanes only): join the strips row by row -------------------------------------
   logic border_done;
-  logic tuf_rd_en, tuf_wr_en;
-  logic [NodeW-1:0] tuf_rd_addr, tuf_wr_addr;
+  logic tuf_wr_en;
+  logic [NodeW-1:0] tuf_wr_addr;
   logic [PW-1:0] tuf_wr_data;
 
   if (Lanes == 1) begin : gen_no_border
     assign border_done = 1'b1;
-    assign tuf_rd_en   = 1'b0;
-    assign tuf_rd_addr = '0;
     assign tuf_wr_en   = 1'b0;
     assign tuf_wr_addr = '0;
     assign tuf_wr_data = '0;
+    assign bpar_raddr  = '0;
+    logic unused_bpar;
+    assign unused_bpar = ^lane_bpar_rd;
   end else begin : gen_border
     localparam int unsigned Borders = Lanes - 1;
     localparam int unsigned QCntW = $clog2(BorderQueue + 1);
@@ -494,9 +535,11 @@ module scw_labelling #(
     logic uf_idle;
     logic [16:0] measure_q;
     logic [LaneSW-1:0] measure_k_q;
+    logic tuf_rd_en;      // (the lanes' bpar ports read every clock)
+    logic [NodeW-1:0] tuf_rd_addr;
     logic unused_border;  // the first strip has no left border, the last no right
     // (and lane 0 starts at column 0: its x0_q stays 0, a constant for synthesis)
-    assign unused_border = lane_left_we[0] ^ lane_right_we[Lanes-1] ^ (|x0_q[15:0]);
+    assign unused_border = lane_left_we[0] ^ lane_right_we[Lanes-1] ^ (|x0_q[15:0]) ^ tuf_rd_en;
 
     assign b_read      = ph_border && active_q && q_room;
     assign border_done = !active_q && !b1_valid_q && !b2_valid_q && !b3_valid_q && !b4_valid_q &&
@@ -626,6 +669,20 @@ module scw_labelling #(
       push_n = ahead;
     end
 
+    // The unit reads through each lane's own port for it, every clock (it uses the word only
+    // after a read): its next address goes to the banks without a multiplexer, and the lane it
+    // read picks the word, by a register.
+    logic [LaneSW-1:0] b_lane_q;
+    logic [PW-1:0] b_rd;
+    assign bpar_raddr = LNodeW'(tuf_rd_addr);
+    always_ff @(posedge clk_i) b_lane_q <= LaneSW'(32'(tuf_rd_addr) >> LNodeW);
+    always_comb begin
+      b_rd = '0;
+      for (int i = 0; i < Lanes; i++) begin
+        if (b_lane_q == LaneSW'(i)) b_rd = lane_bpar_rd[i*PW +: PW];
+      end
+    end
+
     scw_labelling_merge_unit #(
       .Nodes  (NodeSpace),
       .Depth  (BorderQueue),
@@ -638,7 +695,7 @@ module scw_labelling #(
       .push_n_i (push_n),
       .push_a_i (push_a),
       .push_b_i (push_b),
-      .rd_data_i(par_rd),
+      .rd_data_i(b_rd),
       .count_o  (q_count),
       .room_o   (q_room),
       .idle_o   (uf_idle),
@@ -941,9 +998,7 @@ module scw_labelling #(
     par_we    = 1'b0;
     par_waddr = r1_node_q;
     par_wdata = '0;
-    if (ph_border) begin
-      par_re    = tuf_rd_en;
-      par_raddr = tuf_rd_addr;
+    if (ph_border) begin  // (the border merge unit reads through the lanes' bpar port)
       par_we    = tuf_wr_en;
       par_waddr = tuf_wr_addr;
       par_wdata = tuf_wr_data;

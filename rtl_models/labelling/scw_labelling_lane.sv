@@ -91,6 +91,10 @@ module scw_labelling_lane #(
   input  logic [NodeW-1:0]  par_waddr_i,
   input  logic [PW-1:0]     par_wdata_i,
   output logic [PW-1:0]     par_rd_o,      // the word read last clock if this lane's, else 0
+  // Border: the border merge unit's own read port into the parent bank (lanes only), read every
+  // clock at the node's low bits; the stage picks the lane
+  input  logic [LNodeW-1:0] bpar_raddr_i,
+  output logic [PW-1:0]     bpar_rd_o,     // the word at last clock's bpar_raddr_i
   input  logic              desc_re_i,
   input  logic [NodeW-1:0]  desc_raddr_i,
   output logic [DescW-1:0]  desc_rd_o,     // likewise
@@ -120,6 +124,7 @@ module scw_labelling_lane #(
   logic p1_valid_q, p2_valid_q, p3_valid_q;
   logic [15:0] p1_d_q, p2_d_q, p3_d_q, p1_d_d;  // 0 when not an object pixel
   logic [XW-1:0] p1_x_q, p2_x_q, p3_x_q;
+  logic p3_xlast_q;  // P3's pixel is the strip's last column (compared in P2)
   logic [YW-1:0] p1_y_q, p2_y_q, p3_y_q;
   logic p1_has_left_q, p1_has_up_q, p1_left_same_q, p1_up_same_q;
   logic p2_has_left_q, p2_has_up_q, p2_left_same_q, p2_up_same_q, p3_left_same_q, p3_up_same_q;
@@ -274,8 +279,7 @@ module scw_labelling_lane #(
 
   // The strip's edge columns, for the join across strip borders after the frame.
   assign left_we_o     = (Lane > 0) && p3_valid_q && (p3_x_q == '0);
-  assign right_we_o    = (Lane + 1 < Lanes) && p3_valid_q &&
-                         (17'(p3_x_q) + 17'd1 == {1'b0, width_i});
+  assign right_we_o    = (Lane + 1 < Lanes) && p3_valid_q && p3_xlast_q;
   assign border_row_o  = p3_y_q;
   assign border_word_o = {node1, p3_d_q};
 
@@ -288,7 +292,8 @@ module scw_labelling_lane #(
   assign push0   = p4_valid_q && p4_want0_q && !eq0;
   assign push1   = p4_valid_q && p4_want1_q && !(push0 ? p4_up_left_q : eq1);
   assign push_n  = {1'b0, push0} + {1'b0, push1};
-  assign push0_a = NodeW'((push0 ? p4_left1_q : p4_up1_q) - 1'b1);
+  // (both decrements stand beside the duplicate check; push0 only picks one)
+  assign push0_a = push0 ? NodeW'(p4_left1_q - 1'b1) : push1_a;
   assign push0_b = NodeW'(p4_node1_q - 1'b1);
   assign push1_a = NodeW'(p4_up1_q - 1'b1);
   assign push1_b = push0_b;
@@ -600,6 +605,15 @@ module scw_labelling_lane #(
   always_ff @(posedge clk_i) begin
     if (par_re) par_rd <= par_mem_q[par_raddr];
   end
+  // The border merge unit's loop across the lanes closes only without the port multiplexers
+  // between its next address and the bank (a distributed RAM's extra read port costs little).
+  if (Lanes > 1) begin : gen_bpar
+    always_ff @(posedge clk_i) bpar_rd_o <= par_mem_q[bpar_raddr_i];
+  end else begin : gen_no_bpar
+    assign bpar_rd_o = '0;
+    logic unused_bpar;
+    assign unused_bpar = ^bpar_raddr_i;
+  end
 
   scw_labelling_desc_ram #(.DescW(DescW), .Depth(LaneStride)) u_desc_ram (
     .clk_i,
@@ -697,6 +711,7 @@ module scw_labelling_lane #(
       p3_d_q         <= p2_d_q;
       p3_obj_q       <= p2_d_q != 16'd0;
       p3_x_q         <= p2_x_q;
+      p3_xlast_q     <= 16'(p2_x_q) == width_m1_q;  // (width_i holds while pixels flow)
       p3_y_q         <= p2_y_q;
       p3_left_same_q <= p2_left_same_q;
       p3_up_same_q   <= p2_up_same_q;
