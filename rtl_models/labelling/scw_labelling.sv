@@ -181,6 +181,7 @@ module scw_labelling #(
   logic sweep_active_q, sweep_active_d;
   logic [LaneSW-1:0] sweep_lane_q, sweep_lane_d;
   logic [LabW-1:0] sweep_label_q, sweep_label_d;
+  logic [CntW:0] sweep_next_q, sweep_next_d;  // sweep_label_q + 1, kept beside it
   // Resolve and Emit pipelines
   logic r1_valid_q, r1_valid_d, r2_valid_q, r2_valid_d, r2_self_q, r2_self_d;
   logic r3_valid_q, r4_valid_q, r5_valid_q, r6_valid_q;
@@ -810,25 +811,36 @@ module scw_labelling #(
   // Resolve reads the lanes' label counts and copies them for Emit, whose frame they then leave.
   logic sw_yields, sw_step, sw_start;
   logic [NodeW-1:0] sw_node;
-  logic [CntW-1:0] sw_cnt;
 
-  assign sw_cnt    = ph_resolve ? sw_count : emit_cnt_q[sweep_lane_q];
-  assign sw_yields = sweep_active_q && (sw_cnt != '0);
+  // Each lane's count is tested on its own (not empty; more labels after this one) and the
+  // sweep's lane picks the answers: the 4:1 pick of a count no longer stands before the compare.
+  logic [Lanes-1:0] cnt_nonzero, cnt_more;
+  for (genvar t = 0; t < Lanes; t++) begin : gen_sweep_cnt
+    logic [CntW-1:0] cnt_t;
+    assign cnt_t = ph_resolve ? lane_count[t*CntW +: CntW] : emit_cnt_q[t];
+    assign cnt_nonzero[t] = cnt_t != '0;
+    assign cnt_more[t] = sweep_next_q < (CntW + 1)'(cnt_t);
+  end
+  assign sw_yields = sweep_active_q && cnt_nonzero[sweep_lane_q];
   assign sw_node   = NodeW'(N1W'(sweep_lane_q) * LaneStrideN1 + N1W'(sweep_label_q));
 
   always_comb begin
     sweep_active_d = sweep_active_q;
     sweep_lane_d   = sweep_lane_q;
     sweep_label_d  = sweep_label_q;
+    sweep_next_d   = sweep_next_q;
     if (sw_start) begin
       sweep_active_d = 1'b1;
       sweep_lane_d   = '0;
       sweep_label_d  = '0;
+      sweep_next_d   = (CntW + 1)'(1);
     end else if (sw_step && sweep_active_q) begin
-      if (sw_yields && ((CntW + 1)'(sweep_label_q) + 1'b1 < (CntW + 1)'(sw_cnt))) begin
+      if (sw_yields && cnt_more[sweep_lane_q]) begin
         sweep_label_d = sweep_label_q + 1'b1;
+        sweep_next_d  = sweep_next_q + 1'b1;
       end else begin
         sweep_label_d = '0;
+        sweep_next_d  = (CntW + 1)'(1);
         sweep_lane_d  = sweep_lane_q + 1'b1;
         if (sweep_lane_q == LaneSW'(Lanes - 1)) sweep_active_d = 1'b0;
       end
@@ -1107,6 +1119,7 @@ module scw_labelling #(
     rfwd_root_q   <= r2_root;
     sweep_lane_q  <= sweep_lane_d;
     sweep_label_q <= sweep_label_d;
+    sweep_next_q  <= sweep_next_d;
     r1_node_q     <= r1_node_d;
     r2_node_q     <= r2_node_d;
     r2_self_q     <= r2_self_d;
