@@ -136,6 +136,7 @@ class Labelling {
     Reads rd = rd_;
     ParentPorts pp;
     const bool emitting = emitting_;  // Emit's clock sees the registers of before the edge
+    const bool drain_idle = N > 1 && phase_ == kDrain && lanes_idle();
     switch (phase_) {
       case kInit:
         if (++init_ == kInitClocks) phase_ = kFrame;
@@ -155,6 +156,7 @@ class Labelling {
     if (pp.rd) rd.parent = ram_.parent[pp.rd_addr];
     if (pp.wr) ram_.parent[pp.wr_addr] = pp.wr_data;
     rd_ = rd;
+    drain_idle_q_ = drain_idle;
   }
 
  private:
@@ -185,12 +187,19 @@ class Labelling {
   };
 
   // ---------------------------------------------------------------- kFrame and kDrain
-  void frame_clock(bool take, bool sof_mid, const in_type& in) {
-    bool lanes_idle = true;
+  /// Every lane, its FIFO and the registers in front of it empty.
+  bool lanes_idle() const {
     for (int i = 0; i < N; ++i)
-      lanes_idle = lanes_idle && lanes_[i].idle() &&
-                   (N == 1 || (fifo_[i].empty() && !ahead_[i].valid && !head_[i].valid));
-    const bool drained = phase_ == kDrain && lanes_idle;
+      if (!lanes_[i].idle() ||
+          (N > 1 && (!fifo_[i].empty() || ahead_[i].valid || head_[i].valid)))
+        return false;
+    return true;
+  }
+
+  void frame_clock(bool take, bool sof_mid, const in_type& in) {
+    // With lanes the RTL registers the idle test (an AND over every lane): Border starts a
+    // clock after the last lane went idle.
+    const bool drained = phase_ == kDrain && (N == 1 ? lanes_idle() : drain_idle_q_);
     // The beat: one lane takes its pixel (S0), or with lanes it goes into its lane's FIFO.
     int push_lane = -1;
     if (take) push_lane = accept(in);
@@ -508,6 +517,7 @@ class Labelling {
   bool err_pending_ = false, err_frame_ = false, err_sticky_ = false;
   bool tile_overflow_ = false;
   // Emit: its frame's flags and label counts, objects sent.
+  bool drain_idle_q_ = false;  // the RTL's drain_idle_q (lanes only)
   bool emitting_ = false, emit_tile_overflow_ = false, emit_err_ = false, object_overflow_ = false;
   int emitted_ = 0;
   std::array<int, N> emit_count_{};

@@ -885,7 +885,17 @@ module scw_labelling #(
   assign e2_obj_d     = emit_q && adv ? (root_rd == e1_node_q) && big_rd : e2_obj_q;
 
   // ---- control -----------------------------------------------------------------------------
-  assign drained   = (phase_q == PhDrain) && lanes_idle && (fifo_valid == '0);
+  // With lanes, "every lane and FIFO is empty" is an AND over all of them (each lane's pipeline
+  // valids, edge queue and merge unit): it is registered, and Border starts a clock after the
+  // last lane went idle. Nothing enters a lane in PhDrain, so what was idle a clock ago still is.
+  // One lane keeps the direct test: its AND is short, and Resolve follows it.
+  logic drain_idle, drain_idle_q;
+  assign drain_idle = (phase_q == PhDrain) && lanes_idle && (fifo_valid == '0);
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) drain_idle_q <= 1'b0;
+    else drain_idle_q <= drain_idle;
+  end
+  assign drained   = Lanes == 1 ? drain_idle : (phase_q == PhDrain) && drain_idle_q;
   assign frame_end = ph_resolve && res_done;
   // Resolve waits for the last frame's Emit, which still reads the sums.
   assign sw_start  = ((Lanes == 1 ? drained : ph_border && border_done) && !emit_q) ||
