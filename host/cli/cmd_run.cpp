@@ -166,9 +166,11 @@ void write_objects_csv(const fs::path& p, const app::FrameOutput& f) {
 void write_frame(const fs::path& dir, const std::string& prefix, const app::FrameOutput& f) {
   write_image(dir / (prefix + "left_rect.png"), f.left);
   write_image(dir / (prefix + "right_rect.png"), f.right);
-  write_image(dir / (prefix + "disparity16.png"), f.disparity);
+  // PNG has no signed 16-bit format (imwrite would write 8 bits): the Q11.4 codes go out as
+  // CV_16U, invalid (negative) codes saturated to 0.
   cv::Mat q4;
-  f.disparity.convertTo(q4, CV_16UC1);  // invalid (negative) codes saturate to 0: black
+  f.disparity.convertTo(q4, CV_16UC1);
+  write_image(dir / (prefix + "disparity16.png"), q4);
   write_image(dir / (prefix + "disparity.png"), labelling::disparity_picture(q4));
   write_image(dir / (prefix + "labels.png"), f.segmentation.labels);
   write_image(dir / (prefix + "labels_color.png"), labelling::colour_labels(f.segmentation.labels));

@@ -22,6 +22,7 @@ struct Options {
   bool frames_given = false;
   std::uint32_t seed = 1;
   bool markings = false;
+  double grain = -1.0;  // < 0: the preset's
 };
 
 void run(const Options& o) {
@@ -33,13 +34,16 @@ void run(const Options& o) {
   sc::prepare_output_dir(o.out_dir, n);
   std::cerr << "scene: " << seq.preset << ", " << n << " frames " << seq.frame_period_s
             << " s apart, seed " << seq.seed << "; building the ray tables\n";
-  const sc::StereoRig rig;
+  sc::StereoRig rig;
+  rig.pitch_rad = seq.pitch_rad;
   const sc::Renderer renderer(rig);
+  sc::RenderOptions render{1.0, o.seed, seq.ground};
+  render.ground.markings = render.ground.markings || o.markings;
+  if (o.grain >= 0.0) render.ground.grain_contrast = o.grain;
   Progress bar(static_cast<std::size_t>(n));
   const auto progress = [&bar](int done, int) { bar.show(static_cast<std::size_t>(done)); };
   const sc::WrittenScene w =
-      sc::write_scene(seq, renderer, o.out_dir, sc::RenderOptions{1.0, o.seed, o.markings},
-                      progress);
+      sc::write_scene(seq, renderer, o.out_dir, render, progress);
   std::cout << "wrote " << w.frames << " raw pairs (" << sc::left_name(0) << " .. "
             << sc::right_name(w.frames - 1) << "), calibration.yml, truth.jsonl and scene.json in "
             << w.dir << "\n"
@@ -76,8 +80,13 @@ void add_scene_command(CLI::App& app) {
       ->required();
   cmd->add_option("--seed", o->seed, "Texture and camera-noise seed")->capture_default_str();
   cmd->add_flag("--markings", o->markings,
-                "Paint dashed lane markings on the road (far dashes merge into one marking that "
-                "the warning stage takes for an obstacle beside the tunnel: docs/scene.md)");
+                "Paint dashed lane markings on the road (the street presets always do; far dashes "
+                "merge into one marking that the warning stage takes for an obstacle beside the "
+                "tunnel: docs/scene.md)");
+  cmd->add_option("--grain", o->grain,
+                  "Road grain contrast, grey levels (two standard deviations; default: the "
+                  "preset's, 3 for the thesis presets, 25 or 60 for the street presets)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd->callback([o, frames] {
     o->frames_given = frames->count() > 0;
     run(*o);

@@ -2,9 +2,13 @@
 // The preset scenes (host/scene/presets.hpp).
 #include "host/scene/presets.hpp"
 
+#include <cmath>
+
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "host/scene/street.hpp"
 
 namespace scw::host::scene {
 namespace {
@@ -29,8 +33,14 @@ struct Preset {
   const char* name;
   int frames;
 };
-constexpr Preset kPresets[] = {
-    {"distance-sweep", 49}, {"cyclist-crossing", 57}, {"pedestrian-running", 38}};
+constexpr Preset kPresets[] = {{"distance-sweep", 49},   {"cyclist-crossing", 57},
+                               {"pedestrian-running", 38}, {"street-crossing", 41},
+                               {"street-driving", 41}};
+
+// The street presets: a camera pitched 1 degree down, dashed lane markings, and road grain the
+// matcher finds in patches (+-25 while a pedestrian crosses, +-60 while driving).
+constexpr double kStreetPitchRad = 1.0 * 3.141592653589793 / 180.0;
+constexpr double kCrossingGrain = 25.0, kDrivingGrain = 60.0;
 
 std::string names_list() {
   std::string s;
@@ -79,6 +89,27 @@ Sequence make_preset(const std::string& preset, std::optional<int> frames, std::
       s.frame_period_s = step / 5.0;
       f.objects.push_back(standing_box(1, Kind::cyclist, kCyclist, lerp(-7.0, 7.0, k, n), 8.0,
                                        look(seed, 1, 70.0)));
+    } else if (preset == "street-crossing") {
+      // A pedestrian steps out between two cars parked along the right kerb 9 m ahead and
+      // crosses the lane right to left at 1.5 m/s; the car stands.
+      const double step = 6.0 / (n - 1);
+      s.frame_period_s = step / 1.5;
+      StreetLayout street;
+      street.parked_car_z = {3.0, 13.0, 18.5, 30.0};
+      f.objects.push_back(standing_box(1, Kind::pedestrian, kPedestrian, lerp(3.0, -3.0, k, n),
+                                       9.0, look(seed, 1, 85.0)));
+      for (auto& o : street_objects(street, 0.0, seed, 10)) f.objects.push_back(o);
+      s.ground = {true, kCrossingGrain};
+      s.pitch_rad = kStreetPitchRad;
+    } else if (preset == "street-driving") {
+      // The car drives 32 m down the street at 8 m/s past parked cars; nothing crosses.
+      const double step = 32.0 / (n - 1);
+      s.frame_period_s = step / 8.0;
+      StreetLayout street;
+      street.parked_car_z = {12.0, 17.5, 30.0, 45.0, 51.0};
+      f.objects = street_objects(street, lerp(0.0, 32.0, k, n), seed, 10);
+      s.ground = {true, kDrivingGrain};
+      s.pitch_rad = kStreetPitchRad;
     } else {
       // Fig. 5.13: a pedestrian running at the car at 3 m/s past a parked car on the left.
       const double step = 18.5 / (n - 1);

@@ -64,7 +64,7 @@ double gaussian(std::uint64_t key) {
 
 Hit cast_ray(const cv::Vec3d& origin, const cv::Vec3d& direction,
              const std::vector<SceneObject>& objects, double pixel_rad, int subsamples,
-             std::uint32_t ground_seed, bool markings) {
+             std::uint32_t ground_seed, const GroundLook& ground) {
   const double len = cv::norm(direction);
   const cv::Vec3d unit = direction / len;
   double best_t = kInf;
@@ -83,7 +83,7 @@ Hit cast_ray(const cv::Vec3d& origin, const cv::Vec3d& direction,
   Hit h;
   if (best_obj >= 0 && best_t <= t_ground) {
     const SceneObject& o = objects[static_cast<std::size_t>(best_obj)];
-    const cv::Vec3d local = origin + best_t * direction - o.box_min;
+    const cv::Vec3d local = origin + best_t * direction - o.texture_origin;
     const int axis = best_face / 2;
     // The two axes in the face: x faces use (z, y), y faces (x, z), z faces (x, y).
     const double a = axis == 0 ? local[2] : local[0];
@@ -99,7 +99,7 @@ Hit cast_ray(const cv::Vec3d& origin, const cv::Vec3d& direction,
     // the grazing angle.
     const double across = h.distance_m * pixel_rad / subsamples;
     const double along = across / std::max(-unit[1], 1e-9);
-    h.grey = ground_grey(p[0], p[2], across, along, ground_seed, markings);
+    h.grey = ground_grey(p[0], p[2], across, along, ground_seed, ground);
   } else {
     const double elevation = std::atan2(unit[1], std::hypot(unit[0], unit[2]));
     h.distance_m = kInf;
@@ -112,7 +112,7 @@ Renderer::Renderer(const StereoRig& rig, int subsamples)
     : rig_(rig), left_(rig, Side::left, subsamples), right_(rig, Side::right, subsamples) {}
 
 cv::Mat Renderer::render_clean(Side s, const std::vector<SceneObject>& objects,
-                               std::uint32_t ground_seed, bool markings) const {
+                               std::uint32_t ground_seed, const GroundLook& ground) const {
   const RayTable& rays = this->rays(s);
   const int n = rays.subsamples();
   const double pixel_rad = 1.0 / rays.focal_px();
@@ -126,7 +126,7 @@ cv::Mat Renderer::render_clean(Side s, const std::vector<SceneObject>& objects,
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
           sum += cast_ray(rays.origin(), rays.direction(u * n + i, v * n + j), objects, pixel_rad,
-                          n, ground_seed, markings)
+                          n, ground_seed, ground)
                      .grey;
       row[u] = static_cast<float>(sum * norm);
     }
@@ -135,7 +135,7 @@ cv::Mat Renderer::render_clean(Side s, const std::vector<SceneObject>& objects,
 }
 
 cv::Mat Renderer::render(Side s, const SceneFrame& frame, const RenderOptions& options) const {
-  const cv::Mat clean = render_clean(s, frame.objects, options.seed, options.markings);
+  const cv::Mat clean = render_clean(s, frame.objects, options.seed, options.ground);
   cv::Mat out(clean.size(), CV_8UC1);
   // Key: seed, frame, camera, pixel; each field in its own bits so no two pixels share a key.
   const std::uint64_t base = (static_cast<std::uint64_t>(options.seed) << 32) ^

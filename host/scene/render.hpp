@@ -18,9 +18,9 @@ namespace scw::host::scene {
 struct RenderOptions {
   double noise_sigma = 1.0;  // grey levels, Gaussian, independent per pixel and camera
   std::uint32_t seed = 1;    // the road's texture and the noise (with the frame index)
-  /// Dashed lane markings on the road. Off in the presets' default: far dashes merge into one
-  /// marking whose box passes the warning stage's minimum height (docs/scene.md).
-  bool markings = false;
+  /// The road's grain and markings. Markings are off in the thesis presets: far dashes merge
+  /// into one marking whose box passes the warning stage's minimum height (docs/scene.md).
+  GroundLook ground;
 };
 
 struct StereoImages {
@@ -39,7 +39,7 @@ struct Hit {
 /// subtends, for the textures' footprints; `subsamples`: samples per pixel and axis.
 Hit cast_ray(const cv::Vec3d& origin, const cv::Vec3d& direction,
              const std::vector<SceneObject>& objects, double pixel_rad, int subsamples,
-             std::uint32_t ground_seed, bool markings = false);
+             std::uint32_t ground_seed, const GroundLook& ground = {});
 
 /// The renderer of one rig: its two ray tables, built once (about a second each).
 class Renderer {
@@ -52,7 +52,7 @@ class Renderer {
   /// The camera's image before noise and quantisation: the mean of each pixel's sub-samples,
   /// CV_32FC1.
   cv::Mat render_clean(Side s, const std::vector<SceneObject>& objects,
-                       std::uint32_t ground_seed, bool markings = false) const;
+                       std::uint32_t ground_seed, const GroundLook& ground = {}) const;
   /// The raw 8-bit image of one camera: render_clean plus noise seeded by (seed, frame index,
   /// camera), rounded and clamped, so a frame renders the same on every run.
   cv::Mat render(Side s, const SceneFrame& frame, const RenderOptions& options) const;

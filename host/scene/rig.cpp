@@ -2,6 +2,8 @@
 // Frames of the synthetic stereo rig (host/scene/rig.hpp).
 #include "host/scene/rig.hpp"
 
+#include <cmath>
+
 #include <opencv2/calib3d.hpp>
 
 #include "host/warning/setup.hpp"
@@ -30,15 +32,22 @@ cv::Matx33d StereoRig::rotation() const {
 
 double StereoRig::baseline_m() const { return cv::norm(translation_m); }
 
+cv::Matx33d StereoRig::left_axes() const {
+  // Pitching down turns the optical axis (vehicle z) towards the road (vehicle -y).
+  const double c = std::cos(pitch_rad), s = std::sin(pitch_rad);
+  const cv::Matx33d pitch(1, 0, 0, 0, c, -s, 0, s, c);
+  return pitch * kFlipY;
+}
+
 cv::Vec3d StereoRig::vehicle_to_left(const cv::Vec3d& p) const {
-  return kFlipY * (p - camera_in_vehicle_m);
+  return left_axes().t() * (p - camera_in_vehicle_m);
 }
 
 cv::Vec3d StereoRig::left_to_vehicle(const cv::Vec3d& p) const {
-  return kFlipY * p + camera_in_vehicle_m;
+  return left_axes() * p + camera_in_vehicle_m;
 }
 
-cv::Vec3d StereoRig::left_dir_to_vehicle(const cv::Vec3d& d) const { return kFlipY * d; }
+cv::Vec3d StereoRig::left_dir_to_vehicle(const cv::Vec3d& d) const { return left_axes() * d; }
 
 cv::Vec3d StereoRig::right_to_left(const cv::Vec3d& p) const {
   return rotation().t() * (p - translation_m);
@@ -49,7 +58,7 @@ cv::Vec3d StereoRig::centre_in_vehicle(Side s) const {
 }
 
 cv::Matx33d StereoRig::camera_to_vehicle(Side s) const {
-  return s == Side::left ? kFlipY : kFlipY * rotation().t();
+  return s == Side::left ? left_axes() : left_axes() * rotation().t();
 }
 
 }  // namespace scw::host::scene

@@ -33,9 +33,13 @@ struct StereoRig {
   CameraModel right{1402.0, 1401.0, 638.0, 281.5, {-0.055, 0.012, -0.0003, 0.0002, 0.0}};
   cv::Vec3d rotation_rodrigues{0.0025, -0.0035, 0.0040};  // R as a Rodrigues vector, rad
   cv::Vec3d translation_m{-0.300, 0.0015, -0.0010};        // T
-  /// Left camera centre in vehicle coordinates; its axes are the vehicle's (no pitch, roll or
-  /// yaw) with y flipped.
+  /// Left camera centre in vehicle coordinates; its axes are the vehicle's with y flipped,
+  /// turned down by `pitch_rad` about the vehicle's x axis (no roll or yaw).
   cv::Vec3d camera_in_vehicle_m = default_camera_in_vehicle();
+  /// The camera's downward pitch, rad: 0 in the thesis's presets; the street presets mount the
+  /// camera 1 degree down, as a real rig rarely sits level (the warning stage assumes level
+  /// axes, so a pitch shifts its heights by about Z * pitch).
+  double pitch_rad = 0.0;
 
   const CameraModel& camera(Side s) const { return s == Side::left ? left : right; }
   cv::Matx33d rotation() const;  // R
@@ -52,6 +56,8 @@ struct StereoRig {
   cv::Vec3d centre_in_vehicle(Side s) const;
   /// The rotation taking a direction in the camera's frame to vehicle axes.
   cv::Matx33d camera_to_vehicle(Side s) const;
+  /// The left camera's axes in vehicle axes: the y flip, then the pitch.
+  cv::Matx33d left_axes() const;
 };
 
 }  // namespace scw::host::scene

@@ -7,5 +7,6 @@ target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/scene/rig.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/scene/scene.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/scene/render.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/scene/presets.cpp
+                                ${CMAKE_CURRENT_SOURCE_DIR}/scene/street.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/scene/truth.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/scene/write.cpp)

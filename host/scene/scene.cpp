@@ -9,6 +9,9 @@ const char* kind_name(Kind k) {
     case Kind::pedestrian: return "pedestrian";
     case Kind::cyclist: return "cyclist";
     case Kind::car: return "car";
+    case Kind::kerb: return "kerb";
+    case Kind::pavement: return "pavement";
+    case Kind::building: return "building";
   }
   return "?";
 }
@@ -20,6 +23,7 @@ SceneObject standing_box(int id, Kind kind, const cv::Vec3d& size, double centre
   o.kind = kind;
   o.box_min = {centre_x - 0.5 * size[0], 0.0, front_z};
   o.box_max = {centre_x + 0.5 * size[0], size[1], front_z + size[2]};
+  o.texture_origin = o.box_min;
   o.look = look;
   return o;
 }

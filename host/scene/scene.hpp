@@ -11,17 +11,21 @@
 
 namespace scw::host::scene {
 
-enum class Kind { pedestrian, cyclist, car };
+/// What a box is. The street's own parts (kerb, pavement, building) are never what a warning
+/// should be about, except a building front that stands in the way.
+enum class Kind { pedestrian, cyclist, car, kerb, pavement, building };
 
-/// "pedestrian", "cyclist", "car".
+/// "pedestrian", "cyclist", "car", "kerb", "pavement", "building".
 const char* kind_name(Kind k);
 
 /// An axis-aligned box in vehicle coordinates (x right, y up, z ahead, metres). The texture is
-/// fixed to the box's minimum corner, so it moves with the object.
+/// fixed to `texture_origin` (the box's minimum corner unless a long street part is cut to the
+/// view), so it moves with the object.
 struct SceneObject {
   int id = 0;  // the same object keeps its id in every frame
   Kind kind = Kind::pedestrian;
   cv::Vec3d box_min, box_max;
+  cv::Vec3d texture_origin;
   SurfaceLook look;
 
   cv::Vec3d size() const { return box_max - box_min; }
@@ -44,6 +48,8 @@ struct Sequence {
   double frame_period_s = 0.0;
   std::uint32_t seed = 1;  // textures (road and objects) and camera noise
   std::vector<SceneFrame> frames;
+  GroundLook ground;       // the road's grain and markings
+  double pitch_rad = 0.0;  // the rig's downward pitch (StereoRig::pitch_rad)
 };
 
 }  // namespace scw::host::scene

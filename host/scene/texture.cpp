@@ -54,12 +54,12 @@ double unit_scale(const Octave* octaves, int count) {
 // work for far road.
 constexpr double kMaxBandCells = 32.0;
 
-// Road: asphalt grain from 2 to 20 cm, equal weights, faint (+- 3 grey levels, as worn asphalt
-// looks from a car): block matching then leaves the road mostly invalid, as on the Karlsruhe
-// street. A strongly grained road (+- 25 and more) is matched in patches that neither the ground
+// Road: asphalt grain from 2 to 20 cm, equal weights, by default faint (+- 3 grey levels, as worn
+// asphalt looks from a car, GroundLook): block matching then leaves the road mostly invalid, as on
+// the Karlsruhe street. A strongly grained road (+- 25 and more) is matched in patches that neither the ground
 // filter nor the minimum height removes, and the patches decide the warning (docs/scene.md).
 constexpr Octave kAsphalt[] = {{0.02, 1.0}, {0.05, 1.0}, {0.10, 1.0}, {0.20, 1.0}};
-constexpr double kAsphaltMean = 110.0, kAsphaltContrast = 3.0;
+constexpr double kAsphaltMean = 110.0;
 constexpr double kPaint = 215.0;  // marking grey level
 
 // Lane markings: dashed lines between the lanes, no solid edge lines. A long solid line is one
@@ -136,7 +136,7 @@ double fractal_noise(double x, double y, std::uint32_t seed, const Octave* octav
 }
 
 double ground_grey(double x, double z, double footprint_x_m, double footprint_z_m,
-                   std::uint32_t seed, bool markings) {
+                   std::uint32_t seed, const GroundLook& look) {
   // Grain: each octave fades by the footprint across and is averaged over the one along.
   double grain = 0.0;
   for (int i = 0; i < 4; ++i) {
@@ -149,8 +149,9 @@ double ground_grey(double x, double z, double footprint_x_m, double footprint_z_
                                     (z + 0.5 * footprint_z_m) / o.cell_m,
                                     seed + 0x9e3779b9U * (i + 1U));
   }
-  const double asphalt = kAsphaltMean + 0.5 * kAsphaltContrast * grain * unit_scale(kAsphalt, 4);
-  if (!markings) return asphalt;
+  const double asphalt =
+      kAsphaltMean + 0.5 * look.grain_contrast * grain * unit_scale(kAsphalt, 4);
+  if (!look.markings) return asphalt;
   double paint = 0.0;
   const double along =
       (dash_length_below(z + 0.5 * footprint_z_m) - dash_length_below(z - 0.5 * footprint_z_m)) /

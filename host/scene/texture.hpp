@@ -28,6 +28,15 @@ double fractal_noise(double x, double y, std::uint32_t seed, const Octave* octav
 /// closed form): a box filter along one axis, as a pixel averages a surface seen at a slant.
 double value_noise_band(double x, double y0, double y1, std::uint32_t seed);
 
+/// How the road looks: its grain's contrast (two standard deviations, grey levels) and whether
+/// dashed lane markings are painted on it.
+struct GroundLook {
+  bool markings = false;
+  /// +-3: worn asphalt, as block matching sees the Karlsruhe street (mostly invalid); the street
+  /// presets use +-25 and +-60, a road the matcher finds in patches (docs/scene.md).
+  double grain_contrast = 3.0;
+};
+
 /// The road at world (x, z) (vehicle coordinates, metres): asphalt grain around 110 and the
 /// lane markings. `footprint_x_m`, `footprint_z_m`: the ground one sample covers across and
 /// along the road. Seen at a grazing angle a sample covers far more road along than across
@@ -35,7 +44,7 @@ double value_noise_band(double x, double y0, double y1, std::uint32_t seed);
 /// over that footprint: the grain across the road stays sharp, as in a real camera, and nothing
 /// aliases into texture that differs between the two views.
 double ground_grey(double x, double z, double footprint_x_m, double footprint_z_m,
-                   std::uint32_t seed, bool markings = true);
+                   std::uint32_t seed, const GroundLook& look);
 
 /// How an object's surface looks: its noise seed, mean grey level and amplitude (two standard
 /// deviations of its texture).

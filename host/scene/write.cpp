@@ -123,7 +123,9 @@ nlohmann::json rig_json(const StereoRig& rig, int subsamples, const RenderOption
           {"vehicle_origin_m", {w.vehicle_origin.x(), w.vehicle_origin.y(), w.vehicle_origin.z()}},
           {"subsamples", subsamples},
           {"noise_sigma", options.noise_sigma},
-          {"markings", options.markings}};
+          {"pitch_rad", rig.pitch_rad},
+          {"markings", options.ground.markings},
+          {"grain_contrast", options.ground.grain_contrast}};
 }
 
 std::string run_command(const std::string& dir, const std::string& out_dir,

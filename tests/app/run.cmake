@@ -19,6 +19,7 @@ add_test(NAME "app:cli run writes every picture and a results line with the requ
                           labels.png labels_color.png overlay.png objects.csv results.jsonl; do \
                           test -s cli_run/$f || { echo missing $f; exit 1; }; done && \
                           test $(wc -l < cli_run/results.jsonl) -eq 1 && \
+                          test $(od -An -tu1 -j24 -N1 cli_run/disparity16.png) -eq 16 && \
                           for k in frame severity distance_m closest_uv disparity bbox objects \
                           flags; do grep -q \"\\\"$k\\\":\" cli_run/results.jsonl || \
                           { echo missing key $k; exit 1; }; done"

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,7 @@ SceneObject box(int id, double x_min, double width, double front_z, double heigh
   o.id = id;
   o.box_min = {x_min, 0.0, front_z};
   o.box_max = {x_min + width, height, front_z + 0.4};
+  o.texture_origin = o.box_min;
   return o;
 }
 
@@ -192,6 +194,21 @@ TEST_CASE("render: a rendered, rectified pedestrian's disparity is f b / Z", "[s
   for (double d : found) CHECK(std::abs(d - expected) < 1.0);
 }
 
+TEST_CASE("rig: a camera pitched down sees the horizon above its principal point", "[scene]") {
+  StereoRig rig;
+  rig.pitch_rad = 1.0 * 3.141592653589793 / 180.0;
+  // A point far ahead at the camera's height lies on the horizon: v = cy - fy tan(pitch) (the
+  // lens bends it by less than 0.001 px this close to the centre).
+  const cv::Vec3d far = rig.camera_in_vehicle_m + cv::Vec3d(0.0, 0.0, 1e4);
+  const cv::Point2d uv = project(rig, Side::left, rig.vehicle_to_left(far));
+  CHECK(uv.y == Approx(rig.left.cy - rig.left.fy * std::tan(rig.pitch_rad)).margin(0.01));
+  CHECK(uv.x == Approx(rig.left.cx).margin(0.01));
+  // The optical axis points down; the frames are each other's inverse.
+  CHECK(rig.left_dir_to_vehicle({0, 0, 1})[1] == Approx(-std::sin(rig.pitch_rad)));
+  const cv::Vec3d p(1.0, 2.0, 30.0);
+  CHECK(cv::norm(rig.left_to_vehicle(rig.vehicle_to_left(p)) - p) < 1e-12);
+}
+
 TEST_CASE("truth: the severity follows eq. 5.2 with WarningSetup's tunnel", "[scene]") {
   const WarningSetup w;
   const double hw = w.tunnel_half_width_m(), th = w.tunnel_height_m();
@@ -246,11 +263,14 @@ TEST_CASE("truth: the severity follows eq. 5.2 with WarningSetup's tunnel", "[sc
 
 TEST_CASE("presets: they re-enact the thesis's experiments", "[scene]") {
   const StereoRig rig;
-  CHECK(preset_names() ==
-        std::vector<std::string>{"distance-sweep", "cyclist-crossing", "pedestrian-running"});
+  CHECK(preset_names() == std::vector<std::string>{"distance-sweep", "cyclist-crossing",
+                                                   "pedestrian-running", "street-crossing",
+                                                   "street-driving"});
   CHECK(make_preset("distance-sweep").frames.size() == 49);
   CHECK(make_preset("cyclist-crossing").frames.size() == 57);
   CHECK(make_preset("pedestrian-running").frames.size() == 38);
+  CHECK(make_preset("street-crossing").frames.size() == 41);
+  CHECK(make_preset("street-driving").frames.size() == 41);
   for (const auto& p : preset_names()) {
     CHECK(make_preset(p, 2).frames.size() == 2);
     CHECK(make_preset(p, 7).frames.size() == 7);
@@ -303,6 +323,52 @@ TEST_CASE("presets: they re-enact the thesis's experiments", "[scene]") {
     CHECK(frame_truth(s.frames.front(), rig).severity == Severity::kLow);
     CHECK(frame_truth(s.frames.back(), rig).severity == Severity::kHigh);
     CHECK(frame_truth(s.frames.back(), rig).deciding == 1);
+  }
+
+  SECTION("street presets: kerbs, pavements and buildings on both sides, cars parked on the right") {
+    for (const char* name : {"street-crossing", "street-driving"}) {
+      INFO(name);
+      const Sequence s = make_preset(name);
+      CHECK(s.ground.markings);
+      CHECK(s.ground.grain_contrast == (std::string(name) == "street-crossing" ? 25.0 : 60.0));
+      CHECK(s.pitch_rad == Approx(3.141592653589793 / 180.0));
+      StereoRig pitched;
+      pitched.pitch_rad = s.pitch_rad;
+      for (const auto& f : s.frames) {
+        std::map<Kind, int> count;
+        for (const auto& o : f.objects) {
+          ++count[o.kind];
+          const ObjectTruth t = object_truth(o, pitched);
+          // Kerb and pavement stand 0.12 m high: never obstacles; they and the buildings stay
+          // outside the tunnel, the buildings beyond its "near" band.
+          if (o.kind == Kind::kerb || o.kind == Kind::pavement) CHECK_FALSE(t.obstacle);
+          if (o.kind != Kind::pedestrian) CHECK_FALSE(t.in_tunnel);
+          if (o.kind == Kind::building) CHECK(t.gap_m > 4.0);
+          CHECK(o.box_min[2] >= 2.0);  // cut to the view ahead of the bumper
+        }
+        CHECK(count[Kind::kerb] == 2);
+        CHECK(count[Kind::pavement] == 2);
+        CHECK(count[Kind::building] >= 4);
+        CHECK(count[Kind::car] >= 2);
+      }
+    }
+    // Crossing: the pedestrian decides, high while in the tunnel 9 m ahead.
+    const Sequence c = make_preset("street-crossing");
+    StereoRig pitched;
+    pitched.pitch_rad = c.pitch_rad;
+    const FrameTruth mid = frame_truth(c.frames[20], pitched);
+    CHECK(mid.deciding == 1);
+    CHECK(mid.severity == Severity::kHigh);
+    // Driving: the street slides towards the car, its texture with it; part ids stay.
+    const Sequence d = make_preset("street-driving");
+    const double travel = 32.0 / 40.0;
+    const auto& a = d.frames[0].objects;
+    const auto& b = d.frames[1].objects;
+    for (const auto& o : b) {
+      const auto same = std::find_if(a.begin(), a.end(), [&](const auto& p) { return p.id == o.id; });
+      if (same == a.end() || same->kind != o.kind) continue;
+      CHECK(o.texture_origin[2] == Approx(same->texture_origin[2] - travel));
+    }
   }
 
   SECTION("refusals") {
