@@ -12,6 +12,7 @@
 #include "host/eval/plots.hpp"
 #include "host/eval/records.hpp"
 #include "host/eval/report.hpp"
+#include "host/eval/surfaces.hpp"
 #include "host/io/image_file.hpp"
 
 namespace scw::cli {
@@ -27,11 +28,16 @@ struct Options {
 void run(const Options& o) {
   const ev::TruthFile truth = ev::read_truth(o.truth);
   const ev::ResultsFile results = ev::read_results(o.results);
-  const ev::EvalReport report = ev::compare(truth, results);
-  ev::print_report(std::cout, report);
-
+  ev::EvalReport report = ev::compare(truth, results);
   // The plots go beside results.jsonl unless told otherwise: one run's folder holds its story.
   const fs::path dir = fs::path(o.results).parent_path();
+  // A scene folder knows what every pixel shows: say what decided each frame.
+  const fs::path truth_dir = fs::is_directory(o.truth) ? fs::path(o.truth)
+                                                       : fs::path(o.truth).parent_path();
+  if (const auto view = ev::load_scene_view(truth_dir))
+    ev::trace_deciding_surfaces(report, *view, dir);
+  ev::print_report(std::cout, report);
+
   const fs::path plot = o.plot.empty() ? dir / "distance_error.png" : fs::path(o.plot);
   const fs::path sev = o.severity_plot.empty() ? dir / "severity.png" : fs::path(o.severity_plot);
   host::io::write_image(plot, ev::distance_error_plot(report));

@@ -58,6 +58,7 @@ EvalReport compare(const TruthFile& truth, const ResultsFile& results) {
     f.true_distance_m = t->distance_m;
     f.measured_distance_m = r.distance_m;
     f.flags = r.flags;
+    f.label = r.label;
     if (t->distance_m && r.distance_m && *t->distance_m > 0.0) {
       f.rel_error = (*r.distance_m - *t->distance_m) / *t->distance_m;
       const double a = std::abs(*f.rel_error);

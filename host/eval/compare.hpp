@@ -25,6 +25,12 @@ struct FrameEval {
   /// positive (a relative error to 0 m has no meaning).
   std::optional<double> rel_error;
   std::vector<std::string> flags;  // the results line's, e.g. too_close, input_error
+  int label = 0;                   // the deciding object's number in `scw run`'s label picture
+  /// What the deciding object is (surfaces.hpp): "" when not traced (no deciding object, or a
+  /// truth folder without its scene), else a kind name, "road" or "sky", and the share of the
+  /// object's pixels that see it.
+  std::string deciding_surface;
+  double surface_share = 0.0;
 };
 
 /// Every frame and the summary over them.
@@ -38,6 +44,7 @@ struct EvalReport {
   int max_error_frame = -1;  // where the largest |rel_error| is (-1: none)
   double severity_agreement = 0.0;  // fraction of frames whose severities agree, 0..1
   int severity_disagreements = 0;
+  bool surfaces_traced = false;  // deciding_surface was filled in (the scene was at hand)
 };
 
 /// Matches frames by number and compares them. Pure: no files. Throws std::runtime_error naming

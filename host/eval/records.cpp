@@ -136,6 +136,11 @@ ResultsFile parse_results(std::istream& in, const std::string& name) {
     f.severity = severity_of(j, w);
     f.distance_m = distance_of(j, w);
     f.flags = flags_of(j, w);
+    if (j.contains("label")) {  // optional: only what surfaces.hpp traces back needs it
+      if (!j["label"].is_number_integer() || j["label"].get<int>() < 0)
+        w.fail("\"label\" is " + j["label"].dump() + ", not an object number");
+      f.label = j["label"].get<int>();
+    }
     r.frames.push_back(f);
     return f.frame;
   });

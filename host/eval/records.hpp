@@ -34,6 +34,7 @@ struct ResultFrame {
   Severity severity = Severity::kNone;
   std::optional<double> distance_m;  // an upper bound when flags holds too_close
   std::vector<std::string> flags;
+  int label = 0;  // the deciding object's number in the frame's label picture; 0: none or absent
 };
 
 /// A truth file: its name (for messages), the scene's preset ("" when unknown), its frames in

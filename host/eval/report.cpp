@@ -4,9 +4,12 @@
 
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+
+#include "host/eval/surfaces.hpp"
 
 namespace scw::host::eval {
 
@@ -31,21 +34,42 @@ std::string joined(const std::vector<std::string>& v) {
 
 json or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
+/// Frames per deciding surface (traced frames only).
+std::map<std::string, int> surface_counts(const EvalReport& r) {
+  std::map<std::string, int> m;
+  for (const auto& f : r.frames)
+    if (!f.deciding_surface.empty()) ++m[f.deciding_surface];
+  return m;
+}
+
+int street_decided(const EvalReport& r) {
+  int n = 0;
+  for (const auto& f : r.frames) n += is_street_surface(f.deciding_surface);
+  return n;
+}
+
 }  // namespace
 
 void print_report(std::ostream& out, const EvalReport& r) {
   char row[160];
   out << "eval: " << (r.preset.empty() ? "" : r.preset + ", ") << r.frames.size()
       << " frames; truth '" << r.truth_name << "', results '" << r.results_name << "'\n";
-  std::snprintf(row, sizeof row, "%6s %11s %12s %13s  %-8s %-9s %s\n", "frame", "true D (m)",
-                "meas. D (m)", "rel. err (%)", "true", "measured", "flags");
+  // The "decided by" column only when the scene was traced (surfaces.hpp).
+  auto surface = [&r](const std::string& s) {
+    char cell[24];
+    std::snprintf(cell, sizeof cell, "%-12s ", s.c_str());
+    return r.surfaces_traced ? std::string(cell) : std::string();
+  };
+  std::snprintf(row, sizeof row, "%6s %11s %12s %13s  %-8s %-9s %s%s\n", "frame", "true D (m)",
+                "meas. D (m)", "rel. err (%)", "true", "measured", surface("decided by").c_str(),
+                "flags");
   out << row;
   for (const auto& f : r.frames) {
-    std::snprintf(row, sizeof row, "%6d %11s %12s %13s  %-8s %-9s %s%s\n", f.frame,
+    std::snprintf(row, sizeof row, "%6d %11s %12s %13s  %-8s %-9s %s%s%s\n", f.frame,
                   metres(f.true_distance_m).c_str(), metres(f.measured_distance_m).c_str(),
                   percent(f.rel_error).c_str(), severity_name(f.true_severity),
-                  severity_name(f.measured_severity), f.agree ? "  " : "* ",
-                  joined(f.flags).c_str());
+                  severity_name(f.measured_severity), surface(f.deciding_surface).c_str(),
+                  f.agree ? "  " : "* ", joined(f.flags).c_str());
     std::string line(row);
     line.erase(line.find_last_not_of(" \n") + 1);  // no trailing blanks when flags are empty
     out << line << "\n";
@@ -65,6 +89,11 @@ void print_report(std::ostream& out, const EvalReport& r) {
   }
   out << "severity agreement     " << n - static_cast<std::size_t>(r.severity_disagreements)
       << " / " << n << " = " << format("%.1f %%", 100 * r.severity_agreement) << "\n";
+  if (r.surfaces_traced) {
+    out << "decided by             ";
+    for (const auto& [name, count] : surface_counts(r)) out << name << " " << count << "  ";
+    out << "\nby road, kerb or pavement " << street_decided(r) << " frames\n";
+  }
 }
 
 json report_json(const EvalReport& r) {
@@ -86,6 +115,14 @@ json report_json(const EvalReport& r) {
                          {"measured_severity", severity_name(f.measured_severity)},
                          {"agree", f.agree},
                          {"flags", f.flags}});
+    if (r.surfaces_traced && !f.deciding_surface.empty()) {
+      per_frame.back()["deciding_surface"] = f.deciding_surface;
+      per_frame.back()["deciding_surface_share"] = f.surface_share;
+    }
+  }
+  if (r.surfaces_traced) {
+    j["decided_by"] = surface_counts(r);
+    j["street_decided_frames"] = street_decided(r);
   }
   j["severity_truth"] = truth;
   j["severity_measured"] = measured;

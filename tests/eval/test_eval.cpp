@@ -20,7 +20,10 @@
 #include "host/eval/plots.hpp"
 #include "host/eval/records.hpp"
 #include "host/eval/report.hpp"
+#include "host/eval/surfaces.hpp"
 #include "host/io/image_file.hpp"
+#include "host/rectify/calibration.hpp"
+#include "host/scene/write.hpp"
 
 namespace {
 
@@ -401,4 +404,86 @@ TEST_CASE("a plot is written, and a path that cannot be written is refused by na
                     Catch::Contains("/nonexistent_dir/x.png"));
   CHECK_THROWS_WITH(scw::host::io::write_image(p.string() + ".nosuchformat", img),
                     Catch::Contains("nosuchformat"));
+}
+
+namespace {
+
+/// A scene folder as scw scene leaves it, without the pictures: scene.json and calibration.yml.
+fs::path scene_folder(const std::string& name, const std::string& preset, int frames,
+                      double pitch_rad) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json j = {{"preset", preset}, {"frames", frames}, {"seed", 1},
+                      {"rig", {{"pitch_rad", pitch_rad}}}};
+  std::ofstream(dir / "scene.json") << j.dump();
+  scw::host::scene::StereoRig rig;
+  rig.pitch_rad = pitch_rad;
+  scw::host::scene::write_calibration((dir / "calibration.yml").string(), rig);
+  return dir;
+}
+
+/// Where a vehicle point lands in the rectified left image of a camera pitched by `pitch_rad`
+/// (cv::stereoRectify's R1, P1): the test's own rig, not the one eval read back.
+cv::Point projected(double pitch_rad, const fs::path& dir, const cv::Vec3d& p) {
+  scw::host::scene::StereoRig rig;
+  rig.pitch_rad = pitch_rad;
+  const auto rect = scw::rectify::rectify_calibration(
+      scw::rectify::load_stereo_calibration((dir / "calibration.yml").string()));
+  const cv::Mat c = rect.R1 * cv::Mat(rig.vehicle_to_left(p));
+  const cv::Mat& P = rect.P1;
+  const double z = c.at<double>(2);
+  return {static_cast<int>(std::lround(P.at<double>(0, 0) * c.at<double>(0) / z + P.at<double>(0, 2))),
+          static_cast<int>(std::lround(P.at<double>(1, 1) * c.at<double>(1) / z + P.at<double>(1, 2)))};
+}
+
+}  // namespace
+
+TEST_CASE("surfaces: a label's pixels are traced back to what the scene shows there", "[eval]") {
+  struct Probe {
+    cv::Vec3d at;
+    const char* surface;
+  };
+  auto check = [](const fs::path& dir, double pitch_rad, int frame,
+                  const std::vector<Probe>& probes) {
+    const auto view = ev::load_scene_view(dir);
+    REQUIRE(view);
+    cv::Mat labels(view->map_x.size(), CV_16UC1, cv::Scalar(0));
+    for (std::size_t k = 0; k < probes.size(); ++k) {
+      const cv::Point c = projected(pitch_rad, dir, probes[k].at);
+      INFO(probes[k].surface << " at " << c);
+      REQUIRE(cv::Rect(1, 1, labels.cols - 2, labels.rows - 2).contains(c));
+      labels(cv::Rect(c.x - 1, c.y - 1, 3, 3)).setTo(static_cast<int>(k + 1));
+    }
+    for (std::size_t k = 0; k < probes.size(); ++k) {
+      const ev::Surface s = ev::object_surface(*view, frame, labels, static_cast<int>(k + 1));
+      CHECK(s.name == probes[k].surface);
+      CHECK(s.share == 1.0);
+    }
+    CHECK_THAT(error_of([&] { ev::object_surface(*view, frame, labels, 99); }),
+               Contains("no pixel of object 99"));
+  };
+  SECTION("the distance sweep: the pedestrian 30 m ahead, the road, the sky") {
+    const fs::path dir = scene_folder("scw_test_eval_sweep", "distance-sweep", 2, 0.0);
+    check(dir, 0.0, 0, {{{0.0, 0.9, 30.2}, "pedestrian"}, {{-1.0, 0.0, 12.0}, "road"},
+                   {{0.0, 20.0, 200.0}, "sky"}});
+    fs::remove_all(dir);
+  }
+  SECTION("a street seen by a pitched camera: the crossing pedestrian, a pavement, a kerb") {
+    const double pitch = 3.141592653589793 / 180.0;
+    const fs::path dir = scene_folder("scw_test_eval_street", "street-crossing", 41, pitch);
+    check(dir, pitch, 20, {{{0.0, 0.9, 9.2}, "pedestrian"}, {{-6.5, 0.12, 20.0}, "pavement"},
+                    {{-5.3, 0.06, 12.0}, "kerb"}, {{1.0, 0.0, 14.0}, "road"}});
+    CHECK(ev::is_street_surface("pavement"));
+    CHECK_FALSE(ev::is_street_surface("pedestrian"));
+    fs::remove_all(dir);
+  }
+  SECTION("a truth folder without its scene is not traced") {
+    const fs::path dir = fs::temp_directory_path() / "scw_test_eval_noscene";
+    fs::create_directories(dir);
+    CHECK_FALSE(ev::load_scene_view(dir));
+    std::ofstream(dir / "scene.json") << R"({"preset": "not-a-preset"})";
+    CHECK_FALSE(ev::load_scene_view(dir));
+    fs::remove_all(dir);
+  }
 }
