@@ -22,19 +22,13 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include "tools/jsonl.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<nlohmann::json> read_jsonl(const fs::path& p) {
-  std::ifstream in(p);
-  if (!in) throw std::runtime_error("cannot read '" + p.string() + "'");
-  std::vector<nlohmann::json> v;
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) v.push_back(nlohmann::json::parse(line));
-  return v;
-}
+using scw::tools::read_jsonl;
 
 cv::Mat read16(const fs::path& p) {
   cv::Mat m = cv::imread(p.string(), cv::IMREAD_UNCHANGED);

@@ -30,9 +30,9 @@
 #include "host/eval/surfaces.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/rectify/calibration.hpp"
-#include "host/scene/write.hpp"
 #include "host/warning/run_model.hpp"
 #include "host/warning/setup.hpp"
+#include "tools/jsonl.hpp"
 
 namespace {
 
@@ -126,14 +126,7 @@ cv::Mat remove_road(const cv::Mat& q4, const Line& road, const Settings& s) {
   return out;
 }
 
-std::vector<nlohmann::json> read_jsonl(const fs::path& p) {
-  std::ifstream in(p);
-  if (!in) throw std::runtime_error("cannot read '" + p.string() + "'");
-  std::vector<nlohmann::json> v;
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) v.push_back(nlohmann::json::parse(line));
-  return v;
-}
+using scw::tools::read_jsonl;
 
 }  // namespace
 
