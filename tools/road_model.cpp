@@ -26,8 +26,10 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "host/eval/surfaces.hpp"
+#include "host/labelling/picture.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/rectify/calibration.hpp"
 #include "host/warning/run_model.hpp"
@@ -111,6 +113,40 @@ Line fit_road(const cv::Mat& q4, const Line& pred, const Line& nominal, double f
   return l;
 }
 
+/// The v-disparity picture of a frame: a row per image row, 4 columns per disparity pixel, the
+/// log of each (row, disparity) count in grey; the road the frame was filtered with in red and
+/// its tolerance band in yellow.
+cv::Mat vdisparity_picture(const cv::Mat& q4, const Line& road, const Settings& s) {
+  constexpr int kMaxD = 128, kScale = 4;
+  cv::Mat count(q4.rows, kMaxD, CV_32F, cv::Scalar(0));
+  for (int v = 0; v < q4.rows; ++v)
+    for (int u = 0; u < q4.cols; ++u) {
+      const int d = q4.at<std::uint16_t>(v, u) / 16;
+      if (d > 0 && d < kMaxD) count.at<float>(v, d) += 1.0f;
+    }
+  cv::Mat grey;
+  cv::log(count + 1.0f, count);
+  count.convertTo(grey, CV_8U, 255.0 / std::log(1.0 + q4.cols));
+  cv::Mat pic;
+  cv::resize(255 - grey, pic, cv::Size(kMaxD * kScale, q4.rows), 0, 0, cv::INTER_NEAREST);
+  cv::cvtColor(pic, pic, cv::COLOR_GRAY2BGR);
+  for (int v = 0; v + 1 < q4.rows; ++v) {
+    const double d0 = road.at(v), d1 = road.at(v + 1);
+    if (d0 < 1.0) continue;
+    for (double sign : {-1.0, 1.0}) {
+      const double t0 = d0 + sign * (s.tol_px + s.tol_rel * d0);
+      const double t1 = d1 + sign * (s.tol_px + s.tol_rel * d1);
+      cv::line(pic, cv::Point2d(t0 * kScale, v), cv::Point2d(t1 * kScale, v + 1),
+               cv::Scalar(0, 200, 255), 1, cv::LINE_AA);
+    }
+    cv::line(pic, cv::Point2d(d0 * kScale, v), cv::Point2d(d1 * kScale, v + 1),
+             cv::Scalar(0, 0, 255), 2, cv::LINE_AA);
+  }
+  cv::putText(pic, "disparity 0 .. 127 px ->", {8, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
+              cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  return pic;
+}
+
 /// `q4` without its road pixels.
 cv::Mat remove_road(const cv::Mat& q4, const Line& road, const Settings& s) {
   cv::Mat out = q4.clone();
@@ -143,6 +179,12 @@ int main(int argc, char** argv) {
   app.add_option("--camera-height", camera_height, "Nominal camera height for frame 0's road, m")->capture_default_str();
   app.add_flag("--off", off, "Remove nothing (today's chain, for comparison)");
   app.add_flag("--list", list, "Print every frame");
+  int picture_frame = -1;
+  std::string picture_dir;
+  app.add_option("--picture-frame", picture_frame,
+                 "Write this frame's v-disparity with its road, and its map before and after "
+                 "removal, into --picture-dir");
+  app.add_option("--picture-dir", picture_dir, "Folder for --picture-frame's pictures");
   CLI11_PARSE(app, argc, argv);
   try {
     const auto view = ev::load_scene_view(scene_dir);
@@ -173,6 +215,15 @@ int main(int argc, char** argv) {
         throw std::runtime_error("'" + (fs::path(run_dir) / name).string() +
                                  "' is missing or not 16-bit: run scw run on the scene first");
       const cv::Mat kept = off ? q4 : remove_road(q4, road, s);
+      if (f == picture_frame && !picture_dir.empty()) {
+        fs::create_directories(picture_dir);
+        cv::imwrite((fs::path(picture_dir) / "vdisparity.png").string(),
+                    vdisparity_picture(q4, road, s));
+        cv::imwrite((fs::path(picture_dir) / "disparity.png").string(),
+                    scw::labelling::disparity_picture(q4));
+        cv::imwrite((fs::path(picture_dir) / "disparity_without_road.png").string(),
+                    scw::labelling::disparity_picture(kept));
+      }
       const Line next = fit_road(q4, road, nominal, w.focal_px, s);
       const auto lcfg = scw::labelling::grid_config(kept.cols, kept.rows, 4, 4, 0, 200);
       const auto seg = scw::labelling::segment(kept, lcfg);
