@@ -26,7 +26,7 @@
 // The object placement and random tables the [hls] and [rtl] tests use: the vectors exercise
 // the same branches, and a plain fold of evaluate() checks every frame independently of the
 // clocked kernel.
-#include "tests/warning/warning_tables.hpp"
+#include "host/vectors/warning_tables.hpp"
 
 namespace scw::cli {
 namespace {
@@ -129,22 +129,22 @@ Preset thesis() {
   const WarningSetup& s = p.setup;
   const double lane = s.vehicle_origin.x();  // the tunnel's centre line, camera x
   // Upright boxes on the road in the tunnel at 8, 15 and 30 m depth (D about 6.4, 13.4, 28.4 m).
-  const Object car8 = test::place_box(s, lane, 8.0, 1.6, 1.4);
-  const Object car15 = test::place_box(s, lane, 15.0, 1.6, 1.4);
-  const Object car30 = test::place_box(s, lane, 30.0, 1.6, 1.4);
+  const Object car8 = fixtures::place_box(s, lane, 8.0, 1.6, 1.4);
+  const Object car15 = fixtures::place_box(s, lane, 15.0, 1.6, 1.4);
+  const Object car30 = fixtures::place_box(s, lane, 30.0, 1.6, 1.4);
   // A road marking 5 m ahead in the tunnel, 5 cm high: below min_height (0.5 m).
-  const Object marking = test::place_box(s, lane, 5.0, 1.0, 0.05);
+  const Object marking = fixtures::place_box(s, lane, 5.0, 1.0, 0.05);
   // Too far to place: d_max below 1 px.
-  Object far = test::place_box(s, lane, 20.0, 1.6, 1.4);
+  Object far = fixtures::place_box(s, lane, 20.0, 1.6, 1.4);
   far.d_max = far.d_min = 12;
   // Too close: d_max at or past d_limit (64 px = code 1024), judged as at the bumper. One inside
   // the table, one past its end (code 2048 = 128 px reads the last entry).
-  Object close_in = test::place_box(s, lane, 5.0, 1.6, 1.4);
+  Object close_in = fixtures::place_box(s, lane, 5.0, 1.6, 1.4);
   close_in.d_max = 1100;
   Object close_past = close_in;
   close_past.d_max = 2100;
   // Well right of the tunnel (over 2 m beside it, beyond near_m): too close but low.
-  Object close_side = test::place_box(s, lane + 4.0, 5.0, 1.0, 1.4);
+  Object close_side = fixtures::place_box(s, lane + 4.0, 5.0, 1.0, 1.4);
   close_side.d_max = 1100;
 
   using S = Severity;
@@ -191,7 +191,7 @@ constexpr int kRandomFrames = 64;
 
 Preset random_preset() {
   Preset p;
-  p.setup = test::karlsruhe_setup();  // d_limit 127 px: codes from 2032 up, some past the table
+  p.setup = fixtures::karlsruhe_setup();  // d_limit 127 px: codes from 2032 up, some past the table
   p.width = 1344;
   p.height = 391;
   std::mt19937 rng(kRandomSeed);
@@ -199,7 +199,7 @@ Preset random_preset() {
     Frame f;
     f.name = "random " + std::to_string(i);
     // 0 .. 24 objects, so that empty and one-object frames occur too.
-    f.objects = test::random_table(rng, p.setup, static_cast<int>(rng() % 25), p.width, p.height);
+    f.objects = fixtures::random_table(rng, p.setup, static_cast<int>(rng() % 25), p.width, p.height);
     // The labelling stage's capacity flags, now and then (they only pass through).
     f.flags.tile_overflow = rng() % 10 == 0;
     f.flags.object_overflow = rng() % 10 == 0;
@@ -219,13 +219,13 @@ Preset random_preset() {
 
 Preset malformed() {
   Preset p;
-  p.setup = test::thesis_setup();
+  p.setup = fixtures::thesis_setup();
   const WarningSetup& s = p.setup;
   const double lane = s.vehicle_origin.x();
   // All beyond 9.4 m (d below the 64 px limit), so the results vary in severity and distance.
-  const Object a = test::place_box(s, lane, 25.0, 1.6, 1.4);        // in the tunnel: low
-  const Object b = test::place_box(s, lane + 3.0, 12.0, 1.0, 1.6);  // beside it
-  const Object c = test::place_box(s, lane - 0.5, 10.0, 0.8, 1.2);  // in the tunnel: high
+  const Object a = fixtures::place_box(s, lane, 25.0, 1.6, 1.4);        // in the tunnel: low
+  const Object b = fixtures::place_box(s, lane + 3.0, 12.0, 1.0, 1.6);  // beside it
+  const Object c = fixtures::place_box(s, lane - 0.5, 10.0, 0.8, 1.2);  // in the tunnel: high
   auto frame = [](std::string name, std::vector<Object> t, Shape shape) {
     Frame f;
     f.name = std::move(name);
@@ -295,7 +295,7 @@ std::vector<LabelPacket> frame_words(const Frame& f) {
 /// What the stage must report for a frame: a plain fold of evaluate() over its objects, and the
 /// flags as docs/warning.md states them (not the kernel's code).
 FrameResult expected_result(const Frame& f, const WarningConfig& cfg) {
-  FrameResult r = test::fold_table<VecParams>(f.objects, cfg);
+  FrameResult r = fixtures::fold_table<VecParams>(f.objects, cfg);
   if (f.shape == Shape::kLastNoStatus) {
     r.stream_error = true;
     return r;

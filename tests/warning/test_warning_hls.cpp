@@ -12,7 +12,7 @@
 #include "sim/stall.hpp"
 #include "sim/stream_check.hpp"
 #include "sim/warning_model.hpp"
-#include "tests/warning/warning_tables.hpp"
+#include "host/vectors/warning_tables.hpp"
 
 namespace {
 
@@ -21,8 +21,8 @@ using scw::hls::labelling::LabelPacket;
 using scw::hls::warning::FrameResult;
 using scw::hls::warning::Severity;
 using scw::sim::StallPattern;
-using scw::test::fold_table;
-using scw::test::random_table;
+using scw::fixtures::fold_table;
+using scw::fixtures::random_table;
 using Params = scw::hls::warning::WarningParams<128>;
 
 FrameStatus ok_status(std::size_t n) {
@@ -51,7 +51,7 @@ std::vector<FrameResult> run_frames(const std::vector<LabelPacket>& words,
 
 TEST_CASE("warning model: frame results equal a plain fold of evaluate() under every stall",
           "[hls]") {
-  for (const auto& setup : {scw::test::karlsruhe_setup(), scw::test::thesis_setup()}) {
+  for (const auto& setup : {scw::fixtures::karlsruhe_setup(), scw::fixtures::thesis_setup()}) {
     const auto cfg = scw::host::warning::to_fixed(setup);
     std::mt19937 rng(1234);
     std::vector<LabelPacket> words;
@@ -81,7 +81,7 @@ TEST_CASE("warning model: frame results equal a plain fold of evaluate() under e
 
 TEST_CASE("warning model: the result shows kLatency clocks after the status word is taken",
           "[hls]") {
-  const auto setup = scw::test::thesis_setup();
+  const auto setup = scw::fixtures::thesis_setup();
   const auto cfg = scw::host::warning::to_fixed(setup);
   for (int n : {0, 1, 5, 40}) {
     std::mt19937 rng(static_cast<unsigned>(n));
@@ -96,10 +96,10 @@ TEST_CASE("warning model: the result shows kLatency clocks after the status word
 
 TEST_CASE("warning model: a result waiting for the sink holds the stage, then the next frame",
           "[hls]") {
-  const auto setup = scw::test::thesis_setup();
+  const auto setup = scw::fixtures::thesis_setup();
   const auto cfg = scw::host::warning::to_fixed(setup);
   scw::hls::warning::Warning<Params> k(cfg);
-  const auto w = scw::warning::table_words({scw::test::place_box(setup, 0.0, 8.0, 0.6, 1.8)},
+  const auto w = scw::warning::table_words({scw::fixtures::place_box(setup, 0.0, 8.0, 0.6, 1.8)},
                                            ok_status(1));
   std::size_t next = 0;
   for (int t = 0; t < 200; ++t) {  // the sink never takes
@@ -114,9 +114,9 @@ TEST_CASE("warning model: a result waiting for the sink holds the stage, then th
 }
 
 TEST_CASE("warning model: broken tables are flagged and the next frame is right", "[hls]") {
-  const auto setup = scw::test::karlsruhe_setup();
+  const auto setup = scw::fixtures::karlsruhe_setup();
   const auto cfg = scw::host::warning::to_fixed(setup);
-  const auto obj = scw::test::place_box(setup, 0.0, 8.0, 0.6, 1.8);
+  const auto obj = scw::fixtures::place_box(setup, 0.0, 8.0, 0.6, 1.8);
   const std::vector<scw::hls::labelling::Object> good{obj};
   const FrameResult good_result = fold_table<Params>(good, cfg);
   REQUIRE(good_result.severity == Severity::kHigh);
@@ -155,13 +155,13 @@ TEST_CASE("warning model: broken tables are flagged and the next frame is right"
 }
 
 TEST_CASE("warning model: flags carried, nothing measurable gives none", "[hls]") {
-  const auto setup = scw::test::karlsruhe_setup();
+  const auto setup = scw::fixtures::karlsruhe_setup();
   const auto cfg = scw::host::warning::to_fixed(setup);
   FrameStatus s = ok_status(2);
   s.tile_overflow = true;
-  scw::hls::labelling::Object far = scw::test::place_box(setup, 0.0, 8.0, 0.6, 1.8);
+  scw::hls::labelling::Object far = scw::fixtures::place_box(setup, 0.0, 8.0, 0.6, 1.8);
   far.d_max = 15;  // below 1 px: too far to place
-  scw::hls::labelling::Object low = scw::test::place_box(setup, 0.0, 8.0, 1.5, 0.2);  // a marking
+  scw::hls::labelling::Object low = scw::fixtures::place_box(setup, 0.0, 8.0, 1.5, 0.2);  // a marking
   const auto r = scw::warning::run_warning(scw::warning::table_words({far, low}, s), cfg);
   CHECK(r.tile_overflow);
   CHECK_FALSE(r.object_overflow);
@@ -174,13 +174,13 @@ TEST_CASE("warning model: flags carried, nothing measurable gives none", "[hls]"
 
 TEST_CASE("warning model: an object at the top of the search range is judged at the bumper",
           "[hls]") {
-  const auto setup = scw::test::thesis_setup();  // d_limit 64 px: nearer than 9.4 m is unmeasured
+  const auto setup = scw::fixtures::thesis_setup();  // d_limit 64 px: nearer than 9.4 m is unmeasured
   const auto cfg = scw::host::warning::to_fixed(setup);
   // Beside the tunnel, near it, at the limit: medium (judged at 0 m), while the same object
   // 30 m away in the tunnel is low; the near one decides and its distance is an upper bound.
-  auto near = scw::test::place_box(setup, 2.0, 9.0, 0.6, 1.8);
+  auto near = scw::fixtures::place_box(setup, 2.0, 9.0, 0.6, 1.8);
   near.d_max = static_cast<std::uint16_t>(16 * 64);
-  const auto far = scw::test::place_box(setup, -0.3, 30.0, 0.6, 1.8);
+  const auto far = scw::fixtures::place_box(setup, -0.3, 30.0, 0.6, 1.8);
   const auto e = scw::warning::evaluate_object(near, cfg);
   REQUIRE(e.too_close);
   const auto r = scw::warning::run_warning(scw::warning::table_words({far, near}, ok_status(2)),
@@ -198,7 +198,7 @@ TEST_CASE("warning model: an object at the top of the search range is judged at 
 }
 
 TEST_CASE("warning model: configurations the build cannot take are refused by name", "[hls]") {
-  auto cfg = scw::host::warning::to_fixed(scw::test::thesis_setup());
+  auto cfg = scw::host::warning::to_fixed(scw::fixtures::thesis_setup());
   auto bad = cfg;
   bad.d_limit_q4 = 16 * 129;
   CHECK_THROWS_WITH(scw::hls::warning::Warning<Params>(bad), Catch::Contains("disparity limit"));

@@ -24,7 +24,7 @@
 #include "sim/stream_check.hpp"
 #include "sim/warning_model.hpp"
 #include "sim/warning_rtl.hpp"
-#include "tests/warning/warning_tables.hpp"
+#include "host/vectors/warning_tables.hpp"
 #include "tests/common/twin_check.hpp"
 
 namespace {
@@ -110,7 +110,7 @@ std::vector<FrameResult> fold_frames(const std::vector<LabelPacket>& words,
       if (!w.last) continue;
     }
     // The objects' part is the shared plain fold (its own ordering key, not decides_over).
-    FrameResult r = scw::test::fold_table<Params>(objects, cfg);
+    FrameResult r = scw::fixtures::fold_table<Params>(objects, cfg);
     if (w.data.is_status) {
       const auto& st = w.data.status;
       r.tile_overflow = st.tile_overflow;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Object tables for the warning tests: camera setups, objects placed in 3D, random tables that
+// Object tables for the warning stage's tests and golden vectors (shared fixtures, so they live in
+// the product, not in tests/): camera setups, objects placed in 3D, random tables that
 // reach every branch of the stage, and a plain fold of evaluate() to check frame results by.
 #pragma once
 
@@ -13,7 +14,7 @@
 #include "hls/warning/warning_params.hpp"
 #include "host/warning/setup.hpp"
 
-namespace scw::test {
+namespace scw::fixtures {
 
 using hls::labelling::Object;
 using hls::warning::FrameResult;
@@ -123,4 +124,4 @@ FrameResult fold_table(const std::vector<Object>& t, const WarningConfig& c) {
   return r;
 }
 
-}  // namespace scw::test
+}  // namespace scw::fixtures
