@@ -2,13 +2,8 @@
 # The timing budget of one path of logic, in ps, read from host/synth/timing.hpp (kStaBudgetPs),
 # the one place it is written (docs/timing.md): the rtl.yosys.* guard and the `scw synth` test
 # use this, so they cannot disagree with `scw synth`'s table.
-# scw_sta_budget(VAR [NAME]): NAME defaults to kStaBudgetPs; kTopStaCeilingPs is the top's
-# ceiling (see timing.hpp).
 function(scw_sta_budget out_var)
   set(_name kStaBudgetPs)
-  if(ARGC GREATER 1)
-    set(_name "${ARGV1}")
-  endif()
   get_filename_component(_root "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/.." ABSOLUTE)
   file(STRINGS "${_root}/host/synth/timing.hpp" _line REGEX "${_name} = [0-9]+")
   string(REGEX REPLACE ".*${_name} = ([0-9]+).*" "\\1" _ps "${_line}")

@@ -173,8 +173,11 @@ cells="$(awk '
   sections == 1 && incells && NF == 0 { incells = 0 }
 ' "$work/stat.txt")"
 
+# No `printf | head` (or grep -q, or an awk that exits) below: under pipefail the writer of a pipe
+# its reader left early dies of SIGPIPE and the script with it (exit 141). Here-strings and
+# readers that read to the end (sed -n 1p) cannot.
 sum_cells() {  # sum the counts of cell types matching an extended regex
-  printf '%s\n' "$cells" | awk -v re="$1" '$1 ~ re { n += $2 } END { print n + 0 }'
+  awk -v re="$1" '$1 ~ re { n += $2 } END { print n + 0 }' <<<"$cells"
 }
 lut="$(sum_cells '^LUT[1-6](_2)?$')"
 ff="$(sum_cells '^FD[A-Z]*(_1)?$')"
@@ -188,10 +191,10 @@ levels="n/a"
 levels_dsp="n/a"
 if [[ $run_ltp -eq 1 ]]; then
   levels_dsp="$(sed -n 's/.*Longest topological path.*(length=\([0-9]*\)).*/\1/p' \
-    "$work/ltp_dsp.txt" | head -n 1)"
+    "$work/ltp_dsp.txt" | sed -n 1p)"
   [[ -n "$levels_dsp" ]] || levels_dsp="0"
   levels="$(sed -n 's/.*Longest topological path.*(length=\([0-9]*\)).*/\1/p' "$work/ltp.txt" \
-    | head -n 1)"
+    | sed -n 1p)"
   [[ -n "$levels" ]] || levels="0"
   [[ -z "$path_out" ]] || cp "$work/ltp_dsp.txt" "$path_out"
   if grep -q 'Detected loop' "$work/ltp.txt"; then
@@ -207,11 +210,11 @@ if [[ $run_sta -eq 1 ]]; then
   if grep -q 'has no timing arcs' "$log"; then
     keep_work=$own_log
     echo "rtl_synth: ${label}: sta: cells without timing arcs, the path would leave them out:" >&2
-    grep 'has no timing arcs' "$log" | sort -u | head -n 10 >&2
+    grep 'has no timing arcs' "$log" | sort -u | sed -n 1,10p >&2
     exit 1
   fi
   sta_ps="$(sed -n "s/^Latest arrival time in '.*' is \([0-9]*\):.*/\1/p" "$work/sta.txt" |
-    head -n 1)"
+    sed -n 1p)"
   if [[ -z "$sta_ps" ]]; then
     keep_work=$own_log
     echo "rtl_synth: ${label}: sta printed no latest arrival time (log: ${log})" >&2
@@ -223,14 +226,14 @@ if [[ $run_sta -eq 1 ]]; then
   path="$(awk '/^Latest arrival time/ { on = 1; next } on && NF == 0 { exit }
                on && $1 ~ /^[0-9]+$/ && $NF ~ /^\(/ && $NF !~ /input>\)$/ { print $1, $NF }' \
     "$work/sta.txt")"
-  sta_to="$(printf '%s\n' "$path" | head -n 1 | awk '{ gsub(/[()]/, "", $2); print $2 }')"
-  last_hop="$(printf '%s\n' "$path" | sed -n 2p | awk '{ gsub(/[()]/, "", $2); print $2 }')"
+  sta_to="$(awk 'NR == 1 { gsub(/[()]/, "", $2); print $2 }' <<<"$path")"
+  last_hop="$(awk 'NR == 2 { gsub(/[()]/, "", $2); print $2 }' <<<"$path")"
   # The start: the launching cell after the clock buffer, or the input port a path starts at.
-  if printf '%s\n' "$path" | grep -q ' (BUFG\.'; then
-    sta_from="$(printf '%s\n' "$path" | awk '{ gsub(/[()]/, "", $2) } $2 ~ /^BUFG\./ { print prev; exit }
-                                              { prev = $2 }')"
+  if grep -q ' (BUFG\.' <<<"$path"; then
+    sta_from="$(awk '{ gsub(/[()]/, "", $2) } $2 ~ /^BUFG\./ { print prev; exit }
+                     { prev = $2 }' <<<"$path")"
   else
-    sta_from="input:$(sed -n 's/^ *[0-9]* *\\*\(.*[^ ]\) *(<primary input>).*/\1/p' "$work/sta.txt" | head -n 1 | tr -d ' ')"
+    sta_from="input:$(sed -n 's/^ *[0-9]* *\\*\(.*[^ ]\) *(<primary input>).*/\1/p' "$work/sta.txt" | sed -n 1p | tr -d ' ')"
   fi
   case "$sta_to" in
     FD*.*|RAMB18E1.*|RAMB36E1.*|DSP48E1.*|SRL16E.*|SRLC32E.*) ;;

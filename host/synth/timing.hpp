@@ -15,13 +15,6 @@ inline constexpr double kRoutingAllowance = 1.0;
 /// every module against it (rtl_models/CMakeLists.txt reads this number).
 inline constexpr int kStaBudgetPs = 3500;
 
-/// The scw_pipeline top's margin is not yet safe (docs/timing.md). At its default build it
-/// measured 3,517 and 3,599 ps (a path in the labelling merge, which ABC maps 50 to 100 ps apart
-/// between runs), 3,255 ps since that path is one carry chain; at the thesis size 3,428 ps, 72 ps
-/// under the budget, less than that scatter. Its CI guard holds it at this ceiling so that it
-/// cannot get worse; it is not a goal, and the top joins kStaBudgetPs when its margin is safe.
-inline constexpr int kTopStaCeilingPs = 3600;
-
 /// Estimated Fmax in MHz of a path with `logic_ps` of cell delay.
 inline double fmax_mhz_est(double logic_ps) {
   return logic_ps > 0 ? 1.0e6 / (logic_ps * (1.0 + kRoutingAllowance)) : 0.0;
