@@ -22,6 +22,8 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include "host/warning/reference.hpp"
+#include "host/warning/setup.hpp"
 #include "tools/jsonl.hpp"
 
 namespace {
@@ -50,9 +52,12 @@ struct Rule {
   int severity_ok = 0;
 };
 
-const char* severity(double d_m, bool in_tunnel, double high_m, double medium_m) {
+/// Eq. 5.2 as `scw run`'s defaults judge it (host/warning/reference.hpp), for objects in the
+/// tunnel; outside it the gap matters, which results.jsonl does not give: "?".
+const char* severity(double d_m, bool in_tunnel) {
   if (!in_tunnel) return "?";
-  return d_m <= high_m ? "high" : d_m < medium_m ? "medium" : "low";
+  return scw::hls::warning::severity_name(
+      scw::host::warning::judge_severity(true, 0.0, d_m, scw::host::warning::WarningSetup{}));
 }
 
 }  // namespace
@@ -60,13 +65,11 @@ const char* severity(double d_m, bool in_tunnel, double high_m, double medium_m)
 int main(int argc, char** argv) {
   CLI::App app{"Distance rules on a scw run of a synthetic scene (docs/scene.md)"};
   std::string run_dir, truth_file;
-  double z_v = 1.65, high_m = 10.0, medium_m = 20.0;
+  // The bumper's offset ahead of the camera, as scw run's default setup has it.
+  const double z_v = scw::host::warning::WarningSetup{}.vehicle_origin.z();
   bool list = false;
   app.add_option("--run", run_dir, "Folder `scw run` wrote")->required()->check(CLI::ExistingDirectory);
   app.add_option("--truth", truth_file, "The scene's truth.jsonl")->required()->check(CLI::ExistingFile);
-  app.add_option("--bumper-z", z_v, "The bumper's offset ahead of the camera, m (scw run's)");
-  app.add_option("--high", high_m, "Tunnel: high at or below this distance, m (scw run's)");
-  app.add_option("--medium", medium_m, "Tunnel: medium below this distance, m (scw run's)");
   app.add_flag("--list", list, "Print every frame: the truth and each rule's distance");
   CLI11_PARSE(app, argc, argv);
   try {
@@ -135,9 +138,9 @@ int main(int argc, char** argv) {
         const double dist = (dist_run + z_v) * d_run / cand[i] - z_v;
         if (list)
           std::printf(" %7.3f%s", dist,
-                      truth_sev == severity(dist, in_tunnel, high_m, medium_m) ? " " : "*");
+                      truth_sev == severity(dist, in_tunnel) ? " " : "*");
         rules[i].err.push_back(dist / truth_m - 1.0);
-        if (truth_sev == severity(dist, in_tunnel, high_m, medium_m)) ++rules[i].severity_ok;
+        if (truth_sev == severity(dist, in_tunnel)) ++rules[i].severity_ok;
       }
       if (list) std::printf("\n");
       ++frames;
