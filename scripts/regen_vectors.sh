@@ -63,3 +63,14 @@ for preset in thesis random malformed; do
   rm -rf "$out/warning/$preset"
   cp -r "$tmp/warning_$preset" "$out/warning/$preset"
 done
+
+# road/<preset>: six 64 x 48 synthetic road maps whose road the stage finds from a wrong nominal
+# and follows as the horizon pitches, and five maps whose fits the plausibility rules refuse (the
+# road stays the nominal); from the C++ model of the stage built with P = 2, 64 x 48, checked
+# against the floating-point reference; CTest replays them against scw_road (tests/road/tb/).
+mkdir -p "$out/road"
+for preset in street implausible; do
+  "$scw" vectors road --preset "$preset" --out "$tmp/road_$preset" >/dev/null
+  rm -rf "$out/road/$preset"
+  cp -r "$tmp/road_$preset" "$out/road/$preset"
+done

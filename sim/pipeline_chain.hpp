@@ -32,6 +32,8 @@
 #include "sim/rectify_model.hpp"
 #include "sim/rectify_rtl.hpp"
 #include "sim/result_merge.hpp"
+#include "sim/road_model.hpp"
+#include "sim/road_rtl.hpp"
 #include "sim/rtl_params.hpp"
 #include "sim/simulator.hpp"
 #include "sim/warning_model.hpp"
@@ -44,7 +46,8 @@ namespace scw::sim {
 /// with the *_params_match functions, as every Verilated model in the project is checked.
 /// `Ground` is the optional ground filter, which the scw_pipeline top does not have.
 template <typename Check, typename MapGrid, typename Rectify, typename Disparity,
-          typename Labelling, typename Warning, typename Merge, typename Ground = void>
+          typename Labelling, typename Warning, typename Merge, typename Ground = void,
+          typename Road = void>
 struct PipelineRtl {
   using check = Check;
   using map_grid = MapGrid;
@@ -54,6 +57,7 @@ struct PipelineRtl {
   using warning = Warning;
   using merge = Merge;
   using ground = Ground;
+  using road = Road;
 };
 using NoRtl = PipelineRtl<void, void, void, void, void, void, void>;
 
@@ -106,7 +110,11 @@ class PipelineChain {
     add_rectify("rectify_left", engines.rectify, chk_l, map_l, *rect_l_);
     add_rectify("rectify_right", engines.rectify, chk_r, map_r, *rect_r_);
     add_disparity(engines.disparity);
-    label_in_ = disp_;  // the labelling stage takes the disparity beats whole, a lane a pixel
+    // The road stage takes the disparity beats whole, and the labelling stage what it leaves,
+    // a lane a pixel.
+    road_ = &sim_.fifo<label_beat>("road", d.disp);
+    add_road(engines.road);
+    label_in_ = road_;
     if constexpr (P == 1) {
       if (s.ground) {
         auto& filtered = sim_.fifo<label_beat>("ground", d.disp);
@@ -171,7 +179,9 @@ class PipelineChain {
   Fifo<raw_beat>& rect_left() { return *rect_l_; }
   Fifo<raw_beat>& rect_right() { return *rect_r_; }
   Fifo<disp_beat>& disparity() { return *disp_; }
-  /// What the labelling stage takes: the disparity, with the road removed when the setup has a
+  /// What the road stage leaves of the disparity.
+  Fifo<label_beat>& road() { return *road_; }
+  /// What the labelling stage takes: the road stage's output, filtered again when the setup has a
   /// ground filter.
   Fifo<label_beat>& labelling_input() { return *label_in_; }
   Fifo<hls::labelling::LabelPacket>& objects() { return *objects_; }
@@ -272,6 +282,25 @@ class PipelineChain {
     }
   }
 
+  void add_road(Engine e) {
+    using Params = typename Build::road;
+    static_assert(std::is_same_v<typename Params::in_beat, disp_beat> &&
+                      std::is_same_v<typename Params::out_beat, label_beat>,
+                  "the road stage sits between the disparity and labelling stages");
+    if (e == Engine::cpp) {
+      sim_.add<StreamComponent<RoadModel<Params>>>("road", RoadModel<Params>(setup_.road), *disp_,
+                                                   *road_);
+      return;
+    }
+    using VM = typename Rtl::road;
+    if constexpr (kBuilt<VM>) {
+      sim_.add<StreamComponent<RoadRtl<VM, Params>>>(
+          "road", make_road_rtl<VM, Params>("road", setup_.road), *disp_, *road_);
+    } else {
+      not_built("road");
+    }
+  }
+
   void add_ground(Engine e, Fifo<label_beat>& in, Fifo<label_beat>& out) {
     using Params = typename Build::ground;
     static_assert(std::is_same_v<typename Params::in_beat, label_beat>,
@@ -348,6 +377,7 @@ class PipelineChain {
   Fifo<raw_beat>* rect_l_ = nullptr;
   Fifo<raw_beat>* rect_r_ = nullptr;
   Fifo<disp_beat>* disp_ = nullptr;
+  Fifo<label_beat>* road_ = nullptr;
   Fifo<label_beat>* label_in_ = nullptr;
   Fifo<hls::labelling::LabelPacket>* objects_ = nullptr;
   Fifo<hls::labelling::LabelPacket>* warning_in_ = nullptr;

@@ -14,6 +14,7 @@
 #include "hls/labelling/labelling_params.hpp"
 #include "hls/rectify/map_grid.hpp"
 #include "hls/rectify/rectify_params.hpp"
+#include "hls/road/road_params.hpp"
 #include "hls/warning/warning_params.hpp"
 
 namespace scw::sim {
@@ -30,8 +31,9 @@ struct PipelineEngines {
   Engine warning = Engine::cpp;
   Engine merge = Engine::cpp;
   Engine ground = Engine::cpp;  // when the setup has a ground filter
+  Engine road = Engine::cpp;
 
-  static PipelineEngines all(Engine e) { return {e, e, e, e, e, e, e, e}; }
+  static PipelineEngines all(Engine e) { return {e, e, e, e, e, e, e, e, e}; }
 };
 
 /// Depths of the links (scw_pipeline's *FifoDepth parameters; the defaults are the top's).
@@ -46,7 +48,7 @@ struct PipelineDepths {
   int raw = 2;   // input and checked pixels, per camera
   int map = 4;   // map-grid expander to rectifier
   int rect = 4;  // rectifier to disparity
-  int disp = 4;  // disparity to labelling (and the ground filter's link)
+  int disp = 4;  // disparity to road, road to labelling (and the ground filter's link)
   int obj = 2;   // object words
   int res = 2;   // frame results and pipeline results
   int flag = 4;  // per-frame input flags: frames in flight between input and result
@@ -59,6 +61,9 @@ struct PipelineSetup {
   hls::disparity::DisparityConfig disparity;  // width and height are taken from above
   hls::labelling::LabellingConfig labelling;  // width and height are taken from above
   hls::warning::WarningConfig warning;
+  /// The road stage (docs/road.md). The default configuration removes nothing: its nominal
+  /// road is flat at 0 and no fitted slope is plausible (host/road/setup.hpp makes a real one).
+  hls::road::RoadConfig road;
   /// Ground removal (thesis 6.2) between the disparity and labelling stages, at one pixel per
   /// beat only; absent: no filter, the graph of scw_pipeline.
   std::optional<hls::ground::GroundConfig> ground;
@@ -120,6 +125,7 @@ void check_setup(const PipelineSetup& s) {
   if (s.height < Build::kWindow || s.width < Build::kWindow)
     fail("the frame is smaller than the " + std::to_string(Build::kWindow) + " x " +
          std::to_string(Build::kWindow) + " window");
+  hls::road::check_config(s.road);
   if (s.ground) {
     if (Build::kPpc != 1)
       fail("the ground filter takes one pixel per beat: run it at --ppc 1, or without ground "

@@ -19,6 +19,7 @@
 #include "sim/labelling_pack.hpp"
 #include "sim/labelling_rtl.hpp"
 #include "sim/map_grid_rtl.hpp"
+#include "sim/road_rtl.hpp"
 #include "sim/verilated_harness.hpp"
 #include "sim/warning_rtl.hpp"
 
@@ -69,6 +70,7 @@ class PipelineTop {
     drive_disparity_cfg<VM, typename Build::disparity>(m, s.disparity_config());
     drive_labelling_cfg(m, l);  // the top's width and height ports: the same frame
     drive_warning_cfg(m, s.warning);
+    drive_road_config(m, s.road);
     m.run_i = 0;
     m.l_valid_i = 0;
     m.r_valid_i = 0;

@@ -32,6 +32,8 @@
 #include "host/labelling/picture.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/rectify/calibration.hpp"
+#include "host/road/run_model.hpp"
+#include "host/road/setup.hpp"
 #include "host/warning/run_model.hpp"
 #include "host/warning/setup.hpp"
 #include "tools/jsonl.hpp"
@@ -171,12 +173,22 @@ int main(int argc, char** argv) {
   std::string scene_dir, run_dir;
   Settings s;
   bool list = false, off = false;
+  std::string rule = "stage";
+  scw::road::RoadSetup rs;
   double camera_height = 1.2;
   app.add_option("--scene", scene_dir, "Folder scw scene wrote")->required()->check(CLI::ExistingDirectory);
   app.add_option("--run", run_dir, "Folder scw run wrote for it (its defaults)")->required()->check(CLI::ExistingDirectory);
   app.add_option("--tol-px", s.tol_px, "Road tolerance, px")->capture_default_str();
   app.add_option("--tol-rel", s.tol_rel, "Road tolerance, share of the road's disparity")->capture_default_str();
   app.add_option("--camera-height", camera_height, "Nominal camera height for frame 0's road, m")->capture_default_str();
+  app.add_option("--rule", rule,
+                 "stage: the road stage (hls/road, per-pixel gate and least squares); histogram: "
+                 "per-row histogram peaks, two least-squares passes")
+      ->check(CLI::IsMember({"stage", "histogram"}))
+      ->capture_default_str();
+  app.add_option("--gate-px", rs.gate_px, "Stage rule: the fit's gate, px")->capture_default_str();
+  app.add_option("--gate-rel", rs.gate_rel, "Stage rule: the fit's gate, share of d_road")->capture_default_str();
+  app.add_option("--min-count", rs.min_count, "Stage rule: pixels a fit needs")->capture_default_str();
   app.add_flag("--off", off, "Remove nothing (today's chain, for comparison)");
   app.add_flag("--list", list, "Print every frame");
   int picture_frame = -1;
@@ -204,6 +216,14 @@ int main(int argc, char** argv) {
     nominal.a = w.baseline_m / camera_height;
     nominal.b = -nominal.a * w.cv_px;
     Line road = nominal;
+    rs.baseline_m = w.baseline_m;
+    rs.camera_height_m = camera_height;
+    rs.cv_px = w.cv_px;
+    rs.focal_px = w.focal_px;
+    rs.tol_px = s.tol_px;
+    rs.tol_rel = s.tol_rel;
+    scw::road::RoadFilter stage(scw::road::to_fixed(rs));
+    constexpr double kUnit = 16.0 * (1 << scw::hls::road::kFracBits);
     int agree = 0, street = 0, frames = 0;
     std::map<std::string, int> decided;
     for (const auto& t : truth) {
@@ -214,7 +234,14 @@ int main(int argc, char** argv) {
       if (q4.empty() || q4.type() != CV_16UC1)
         throw std::runtime_error("'" + (fs::path(run_dir) / name).string() +
                                  "' is missing or not 16-bit: run scw run on the scene first");
-      const cv::Mat kept = off ? q4 : remove_road(q4, road, s);
+      cv::Mat kept;
+      if (rule == "stage") {
+        kept = stage.filter(q4);
+        road = Line{stage.road().a / kUnit, stage.road().b / kUnit};
+        if (off) kept = q4;
+      } else {
+        kept = off ? q4 : remove_road(q4, road, s);
+      }
       if (f == picture_frame && !picture_dir.empty()) {
         fs::create_directories(picture_dir);
         cv::imwrite((fs::path(picture_dir) / "vdisparity.png").string(),
@@ -224,7 +251,7 @@ int main(int argc, char** argv) {
         cv::imwrite((fs::path(picture_dir) / "disparity_without_road.png").string(),
                     scw::labelling::disparity_picture(kept));
       }
-      const Line next = fit_road(q4, road, nominal, w.focal_px, s);
+      const Line next = rule == "stage" ? road : fit_road(q4, road, nominal, w.focal_px, s);
       const auto lcfg = scw::labelling::grid_config(kept.cols, kept.rows, 4, 4, 0, 200);
       const auto seg = scw::labelling::segment(kept, lcfg);
       const auto r =

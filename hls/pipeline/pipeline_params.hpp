@@ -8,6 +8,7 @@
 #include "hls/labelling/labelling_params.hpp"
 #include "hls/rectify/map_grid.hpp"
 #include "hls/rectify/rectify_params.hpp"
+#include "hls/road/road_params.hpp"
 #include "hls/warning/warning_params.hpp"
 
 namespace scw::hls::pipeline {
@@ -38,6 +39,8 @@ struct PipelineParams {
   using labelling = ::scw::hls::labelling::LabellingParams<MaxWidthPx, MaxHeight, MaxTilesX,
                                                            MaxTilesY, LabelsPerTile, MaxObjects, P>;
   using warning = ::scw::hls::warning::WarningParams<MaxDisparityPx>;
+  /// The road stage between disparity and labelling: P disparities a beat, as both take them.
+  using road = ::scw::hls::road::RoadParams<P, MaxWidthPx, MaxHeight>;
   /// The optional ground-removal filter (thesis 6.2) between disparity and labelling: one pixel
   /// per beat, so only at P = 1.
   using ground = ::scw::hls::ground::GroundParams<MaxWidthPx>;

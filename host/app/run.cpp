@@ -11,6 +11,7 @@
 #include "host/reference/ground_ref.hpp"
 #include "host/labelling/picture.hpp"
 #include "host/rectify/run_model.hpp"
+#include "host/road/setup.hpp"
 #include "host/warning/overlay.hpp"
 #include "host/warning/run_model.hpp"
 
@@ -144,6 +145,15 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
         disparity::mode_config(opt_.mode, out.left.cols, out.left.rows, opt_.min_disp);
     out.disparity = disparity::disparity_image(out.left, out.right, opt_.window, opt_.min_disp,
                                                opt_.max_disp, dcfg);
+    if (opt_.road) {
+      if (!road_) {
+        const double cv = opt_.warning.cv_px != 0.0 ? opt_.warning.cv_px
+                                                    : 0.5 * (out.disparity.rows - 1);
+        road_ = std::make_unique<road::RoadFilter>(road::to_fixed(road::rig_setup(
+            opt_.warning.baseline_m, opt_.warning.focal_px, cv, opt_.camera_height_m)));
+      }
+      out.disparity = road_->filter(out.disparity);
+    }
     if (opt_.ground)
       out.disparity = ground::remove_ground(
           out.disparity,

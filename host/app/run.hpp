@@ -17,6 +17,7 @@
 #include "host/disparity/run_model.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/rectify/fixed_map.hpp"
+#include "host/road/run_model.hpp"
 #include "host/warning/setup.hpp"
 
 namespace scw::app {
@@ -32,8 +33,9 @@ struct RunOptions {
   disparity::Mode mode = disparity::kDefaultMode;
   int tiles_x = 4, tiles_y = 4;
   int min_area = 200;
-  bool ground = false;  // thesis 6.2 ground-plane removal between disparity and labelling
-  double camera_height_m = 1.2;  // for the ground filter's expected slope
+  bool road = true;     // the road stage (docs/road.md) between disparity and labelling
+  bool ground = false;  // thesis 6.2 ground-plane removal after it
+  double camera_height_m = 1.2;  // the road stage's nominal road, the ground filter's slope
   host::warning::WarningSetup warning;  // camera, car, thresholds (principal point, limit set
                                         // by the runner from the images and max_disp)
   std::string classifier;  // model file from `scw train`; empty: the parallelepiped classifier
@@ -76,7 +78,7 @@ struct TargetReport {
 /// One frame through the chain.
 struct FrameOutput {
   cv::Mat left, right;  // rectified grey
-  cv::Mat disparity;    // CV_16S, Q11.4 (after ground removal when on)
+  cv::Mat disparity;    // CV_16S, Q11.4 (after the road stage, and ground removal when on)
   labelling::Segmentation segmentation;
   hls::warning::FrameResult result;  // the warning stage's word
   bool input_error = false;          // the pipeline's input checks flagged this pair
@@ -118,6 +120,7 @@ class Runner {
   std::optional<RectifyMaps> maps_;
   StageEngine engine_;
   std::unique_ptr<AppLayer> app_;
+  std::unique_ptr<road::RoadFilter> road_;  // the road stage's state from frame to frame
 };
 
 /// The frame's line of results.jsonl: frame, severity, distance_m, closest_uv, disparity, bbox,

@@ -289,9 +289,11 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--mode", o->mode, "Disparity mode (scw disparity --help)")->capture_default_str()
       ->check(CLI::IsMember({"thesis", "opencv"}));
   cmd->add_option("--min-area", o->run.min_area, "Smallest object, px")->capture_default_str();
+  cmd->add_flag("!--no-road", o->run.road,
+                "Keep the road in the labelling's input (the road stage passes every pixel)");
   cmd->add_flag("--ground", o->run.ground, "Ground-plane removal (thesis 6.2) before labelling");
   cmd->add_option("--camera-height", o->run.camera_height_m,
-                  "Camera height above the road, m (ground removal's slope)")->capture_default_str();
+                  "Camera height above the road, m (the road stage's first road, ground removal's slope)")->capture_default_str();
   cmd->add_option("--min-height", o->run.warning.min_height_m,
                   "Lower objects are not obstacles (road markings), m")->capture_default_str();
   cmd->add_option("--near", o->run.warning.near_m,

@@ -80,13 +80,14 @@ sim::PipelineEngines engines_of(const Options& o, const sim::PipelineEngines& bu
                         : b == "map_grid"  ? &e.map_grid
                         : b == "rectify"   ? &e.rectify
                         : b == "disparity" ? &e.disparity
+                        : b == "road"      ? &e.road
                         : b == "labelling" ? &e.labelling
                         : b == "warning"   ? &e.warning
                         : b == "merge"     ? &e.merge
                                            : nullptr;
     if (slot == nullptr)
       throw std::invalid_argument("--rtl-stages: no block '" + b +
-                                  "' (check, map_grid, rectify, disparity, labelling, "
+                                  "' (check, map_grid, rectify, disparity, road, labelling, "
                                   "warning, merge)");
     *slot = sim::Engine::rtl;
   }
@@ -237,7 +238,7 @@ int run(const Options& o, int width, int height, int dmin_default, int num_disp_
   if (o.reference) {
     std::cerr << "the floating-point chain (direct SAD reference or cv::StereoBM, flood fill, "
                  "Eigen) on the same pair...\n";
-    const auto ref = host::pipeline::reference_frame(l, r, Build::kWindow, so);
+    const auto ref = host::pipeline::reference_frame(l, r, Build::kWindow, so, o.frames);
     const auto& got = chain.results().back().data.frame;
     const bool any = ref.result.index >= 0;
     const double ref_d = any ? ref.result.deciding.distance_m : 0.0;

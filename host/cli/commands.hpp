@@ -24,5 +24,6 @@ void add_vectors_rectify_command(CLI::App& vectors);
 void add_vectors_disparity_command(CLI::App& vectors);
 void add_vectors_labelling_command(CLI::App& vectors);  // `scw vectors labelling`
 void add_vectors_warning_command(CLI::App& vectors);    // `scw vectors warning`
+void add_vectors_road_command(CLI::App& vectors);       // `scw vectors road`
 
 }  // namespace scw::cli

@@ -14,7 +14,7 @@
 namespace scw::host::pipeline {
 
 ReferenceFrame reference_frame(const cv::Mat& left, const cv::Mat& right, int window_n,
-                               const StageOptions& opt) {
+                               const StageOptions& opt, int frames) {
   if (opt.mode != disparity::Mode::opencv)
     throw std::invalid_argument("the reference chain runs cv::StereoBM: opencv mode only");
   const int w = left.cols, h = left.rows;
@@ -24,7 +24,7 @@ ReferenceFrame reference_frame(const cv::Mat& left, const cv::Mat& right, int wi
   const cv::Mat r = right.isContinuous() ? right : right.clone();
   // cv::StereoBM takes multiples of 16 candidates; other ranges (the thesis's 45) go through the
   // direct reference, plain loops over every window, equal to StereoBM where both apply.
-  const auto d =
+  auto d =
       opt.num_disp % 16 == 0
           ? reference::stereo_bm(l.ptr<std::uint8_t>(), r.ptr<std::uint8_t>(), w, h, window_n,
                                  opt.num_disp, cfg, true)
@@ -33,6 +33,22 @@ ReferenceFrame reference_frame(const cv::Mat& left, const cv::Mat& right, int wi
   ReferenceFrame f;
   f.disparity = cv::Mat(h, w, CV_16S);
   std::memcpy(f.disparity.data, d.data(), d.size() * sizeof(std::uint16_t));
+  if (opt.road) {
+    const auto w_setup = warning_setup(w, h, opt);
+    auto rsetup = road::rig_setup(w_setup.baseline_m, w_setup.focal_px, w_setup.cv_px,
+                                  opt.camera_height_m);
+    rsetup.min_count = opt.road_min_count;
+    const auto rcfg = road::to_fixed(rsetup);
+    const double unit = 16.0 * (1 << hls::road::kFracBits);
+    f.road = {rcfg.nominal.a / unit, rcfg.nominal.b / unit};
+    const cv::Mat map = f.disparity.clone();
+    for (int k = 0; k < frames; ++k) {
+      const auto r = reference::road_reference(map, f.road, rcfg);
+      f.disparity = r.kept;
+      if (k + 1 < frames) f.road = r.next;
+    }
+    std::memcpy(d.data(), f.disparity.data, d.size() * sizeof(std::uint16_t));
+  }
   const int invalid = static_cast<std::int16_t>(hls::disparity::invalid_code(cfg));
   const auto lcfg = labelling::grid_config(w, h, opt.tiles_x, opt.tiles_y,
                                            invalid > 0 ? invalid : 0, opt.min_area);

@@ -8,6 +8,7 @@
 
 #include "host/pipeline/setup.hpp"
 #include "host/reference/ground_ref.hpp"
+#include "host/road/run_model.hpp"
 #include "host/rectify/fixed_map.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "sim/pipeline_chain.hpp"
@@ -45,6 +46,8 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
   so.tiles_y = o.tiles_y;
   so.min_area = o.min_area;
   so.warning = o.warning;
+  so.road = o.road;
+  so.camera_height_m = o.camera_height_m;
   std::vector<hls::rectify::KnotPoint> left, right;
   int lead = 1;
   if (knot_source) {
@@ -63,13 +66,20 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
   if (o.ground)
     setup.ground = scw::ground::default_ground_config(o.warning.baseline_m, o.camera_height_m);
   sim::check_setup<Build>(setup);
-  return [setup, width, height](const cv::Mat& l, const cv::Mat& r) {
+  // A chain is built for every pair; the road stage's state goes from one to the next as the
+  // road it starts from (a fit of no pixels keeps it), the C++ road model giving the next one.
+  return [setup, width, height, line = setup.road.nominal](const cv::Mat& l,
+                                                           const cv::Mat& r) mutable {
     constexpr int P = Build::kPpc;
-    sim::PipelineChain<Build, Rtl> chain(setup, sim::PipelineEngines::all(sim::Engine::rtl),
+    auto frame_setup = setup;
+    frame_setup.road.nominal = line;
+    sim::PipelineChain<Build, Rtl> chain(frame_setup,
+                                         sim::PipelineEngines::all(sim::Engine::rtl),
                                          frames_beats<P>({l}),
                                          frames_beats<P>({r}));
     chain.rect_left().record(true);
     chain.rect_right().record(true);
+    chain.disparity().record(true);
     chain.labelling_input().record(true);  // the disparity, after ground removal when on
     chain.objects().record(true);
     chain.run(1, 64 * static_cast<std::int64_t>(width) * height + 1000000);
@@ -77,6 +87,12 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
     s.left = picture(chain.rect_left().recorded(), width, height, CV_8U);
     s.right = picture(chain.rect_right().recorded(), width, height, CV_8U);
     s.disparity = picture(chain.labelling_input().recorded(), width, height, CV_16S);
+    road::RoadFilter road(frame_setup.road);
+    const cv::Mat filtered =
+        road.filter(picture(chain.disparity().recorded(), width, height, CV_16S));
+    if (!setup.ground && cv::countNonZero(filtered != s.disparity) != 0)
+      throw std::logic_error("the engine's road stage differs from the C++ road model");
+    line = road.next_road();
     for (const auto& w : chain.objects().recorded()) {
       if (w.data.is_status) s.status = w.data.status;
       else s.objects.push_back(w.data.object);

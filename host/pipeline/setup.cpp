@@ -46,7 +46,15 @@ sim::PipelineSetup make_setup(int width, int height, int grid_log2, const StageO
   const int invalid = static_cast<std::int16_t>(hls::disparity::invalid_code(s.disparity));
   s.labelling = labelling::grid_config(width, height, opt.tiles_x, opt.tiles_y,
                                        invalid > 0 ? invalid : 0, opt.min_area);
-  s.warning = host::warning::to_fixed(warning_setup(width, height, opt));
+  const auto w = warning_setup(width, height, opt);
+  s.warning = host::warning::to_fixed(w);
+  if (opt.road) {
+    auto r = road::rig_setup(w.baseline_m, w.focal_px, w.cv_px, opt.camera_height_m);
+    r.min_count = opt.road_min_count;
+    s.road = road::to_fixed(r);
+  } else {
+    s.road.enable = false;
+  }
   s.knot_cols = rectify::knot_count(width, grid_log2);
   s.knot_rows = rectify::knot_count(height, grid_log2);
   s.left_knots = std::move(left_knots);

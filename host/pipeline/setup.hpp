@@ -10,6 +10,7 @@
 #include "hls/common/beat.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/rectify/map_grid.hpp"
+#include "host/road/setup.hpp"
 #include "host/warning/setup.hpp"
 #include "sim/frame_beats.hpp"
 #include "sim/pipeline_setup.hpp"
@@ -24,6 +25,9 @@ struct StageOptions {
   int tiles_x = 2, tiles_y = 2;
   int min_area = 50;
   host::warning::WarningSetup warning;  // principal point and d_limit are set from the frame
+  bool road = true;              // the road stage removes the road (off: it passes everything)
+  double camera_height_m = 1.2;  // the road stage's nominal road
+  int road_min_count = road::RoadSetup{}.min_count;  // pixels the road stage's fit needs
 };
 
 /// Knots of the map that leaves an image as it is (rectified input): knot (i, j) at pixel

@@ -3,7 +3,8 @@
 // rectifier), disparity, labelling and warning, every link an scw_fifo.
 `default_nettype none
 
-//  left raw  -> [camera L] --rect--> scw_disparity -> FIFO -> scw_labelling -> FIFO -> fork
+//  left raw  -> [camera L] --rect--> scw_disparity -> FIFO -> scw_road -> FIFO -> scw_labelling
+//                                                                                 -> FIFO -> fork
 //  right raw -> [camera R] --rect-->    fork -> FIFO -> obj (the object table, for the host)
 //                  |flag                fork -> FIFO -> scw_warning -> FIFO -> scw_result_merge
 //                  |                                                              |
@@ -84,6 +85,19 @@ module scw_pipeline #(
   input  logic [15:0]        cfg_near_mm_i,
   input  logic [15:0]        cfg_min_height_mm_i,
   input  logic [15:0]        cfg_d_limit_q4_i,
+  // road (hls::road::RoadConfig)
+  input  logic               cfg_road_enable_i,
+  input  logic [17:0]        cfg_road_a0_i,
+  input  logic signed [31:0] cfg_road_b0_i,
+  input  logic [17:0]        cfg_road_a_min_i,
+  input  logic [17:0]        cfg_road_a_max_i,
+  input  logic [9:0]         cfg_road_h_min_i,
+  input  logic [9:0]         cfg_road_h_max_i,
+  input  logic [14:0]        cfg_road_tol_i,
+  input  logic [7:0]         cfg_road_tol_rel_i,
+  input  logic [14:0]        cfg_road_gate_i,
+  input  logic [7:0]         cfg_road_gate_rel_i,
+  input  logic [19:0]        cfg_road_min_count_i,
   // map knots, written while run_i is low; knot_right_i picks the camera
   input  logic               run_i,
   input  logic               knot_we_i,
@@ -182,6 +196,29 @@ module scw_pipeline #(
     .count_o()
   );
 
+  // road -> FIFO (registered like the disparity FIFO: the labelling stage decodes its head beat)
+  logic             r_valid, r_ready, r_sof, r_eol, rq_valid, rq_ready;
+  logic [DispW-1:0] r_data;
+  logic [DispW+1:0] rq_word;
+
+  scw_road #(.Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)) u_road (
+    .clk_i, .rst_ni,
+    .cfg_road_enable_i, .cfg_road_a0_i, .cfg_road_b0_i, .cfg_road_a_min_i, .cfg_road_a_max_i,
+    .cfg_road_h_min_i, .cfg_road_h_max_i, .cfg_road_tol_i, .cfg_road_tol_rel_i,
+    .cfg_road_gate_i, .cfg_road_gate_rel_i, .cfg_road_min_count_i,
+    .in_valid_i(dq_valid), .in_ready_o(dq_ready), .in_data_i(dq_word[DispW-1:0]),
+    .in_sof_i(dq_word[DispW]), .in_eol_i(dq_word[DispW+1]),
+    .out_valid_o(r_valid), .out_ready_i(r_ready), .out_data_o(r_data), .out_sof_o(r_sof),
+    .out_eol_o(r_eol)
+  );
+
+  scw_fifo #(.Width(DispW + 2), .Depth(DispFifoDepth), .OutReg(1'b1)) u_road_fifo (
+    .clk_i, .rst_ni,
+    .in_valid_i(r_valid), .in_ready_o(r_ready), .in_data_i({r_eol, r_sof, r_data}),
+    .out_valid_o(rq_valid), .out_ready_i(rq_ready), .out_data_o(rq_word),
+    .count_o()
+  );
+
   // labelling -> FIFO -> warning -> FIFO
   logic            o_valid, o_ready, o_last, oq_valid, oq_ready;
   logic [ObjW-1:0] o_data;
@@ -197,8 +234,8 @@ module scw_pipeline #(
     .clk_i, .rst_ni,
     .cfg_width_i(16'(cfg_width_i)), .cfg_height_i(16'(cfg_height_i)),
     .cfg_tile_w_i, .cfg_tile_h_i, .cfg_floor_i, .cfg_min_area_i,
-    .in_valid_i(dq_valid), .in_ready_o(dq_ready), .in_data_i(dq_word[DispW-1:0]),
-    .in_sof_i(dq_word[DispW]), .in_eol_i(dq_word[DispW+1]),
+    .in_valid_i(rq_valid), .in_ready_o(rq_ready), .in_data_i(rq_word[DispW-1:0]),
+    .in_sof_i(rq_word[DispW]), .in_eol_i(rq_word[DispW+1]),
     .out_valid_o(o_valid), .out_ready_i(o_ready), .out_data_o(o_data), .out_last_o(o_last),
     .err_o(err_lab)
   );

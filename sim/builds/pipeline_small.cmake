@@ -15,7 +15,7 @@ scw_verilate(scw_rtl_pipeline_small TOP scw_disparity PREFIX Vpipe_p1_disparity 
              PARAMS Ppc=1 MaxWidthPx=128 MaxHeight=96 Window=9 NumDisp=16 NO_TRACE)
 foreach(p 1 2)
   scw_verilate(scw_rtl_pipeline_small TOP scw_pipeline PREFIX Vpipe_p${p}_top
-               STAGE rectify disparity labelling warning pipeline
+               STAGE rectify disparity road labelling warning pipeline
                PARAMS Ppc=${p} MaxWidthPx=128 MaxHeight=96 RectRows=16 GridLog2=3 Window=9
                       NumDisp=16 MaxTilesX=4 MaxTilesY=2 LabelsPerTile=256 MaxObjects=64
                       MaxDisparityPx=32 NO_TRACE)
@@ -25,6 +25,10 @@ foreach(p 1 2)
                STAGE labelling
                PARAMS MaxWidthPx=128 MaxHeight=96 MaxTilesX=4 MaxTilesY=2 LabelsPerTile=256
                       MaxObjects=64 Lanes=${p} NO_TRACE)
+endforeach()
+foreach(p 1 2)
+  scw_verilate(scw_rtl_pipeline_small TOP scw_road PREFIX Vpipe_p${p}_road STAGE road
+               PARAMS Ppc=${p} MaxWidthPx=128 MaxHeight=96 NO_TRACE)
 endforeach()
 scw_verilate(scw_rtl_pipeline_small TOP scw_warning PREFIX Vpipe_warning STAGE warning
              PARAMS MaxDisparityPx=32 NO_TRACE)

@@ -17,10 +17,14 @@
 #include "Vpipe_p1_labelling_scw_labelling.h"
 #include "Vpipe_p1_rectify.h"
 #include "Vpipe_p1_rectify_scw_rectify.h"
+#include "Vpipe_p1_road.h"
+#include "Vpipe_p1_road_scw_road.h"
 #include "Vpipe_p1_top.h"
 #include "Vpipe_p1_top_scw_pipeline.h"
 #include "Vpipe_p2_labelling.h"
 #include "Vpipe_p2_labelling_scw_labelling.h"
+#include "Vpipe_p2_road.h"
+#include "Vpipe_p2_road_scw_road.h"
 #include "Vpipe_p2_top.h"
 #include "Vpipe_p2_top_scw_pipeline.h"
 #include "Vpipe_warning.h"
@@ -45,6 +49,8 @@ static_assert(disparity_params_match<Vpipe_p1_disparity_scw_disparity,
                                                hls::disparity::Disparity<Build<1>::disparity>>());
 static_assert(labelling_params_match<Vpipe_p1_labelling_scw_labelling, Build<1>::labelling>());
 static_assert(labelling_params_match<Vpipe_p2_labelling_scw_labelling, Build<2>::labelling>());
+static_assert(road_params_match<Vpipe_p1_road_scw_road, Build<1>::road>());
+static_assert(road_params_match<Vpipe_p2_road_scw_road, Build<2>::road>());
 static_assert(warning_params_match<Vpipe_warning_scw_warning, Build<1>::warning>());
 static_assert(result_merge_params_match<Vpipe_merge_scw_result_merge>());
 static_assert(ground_params_match<Vpipe_ground_scw_ground, Build<1>::ground>());
@@ -56,14 +62,15 @@ struct Rtl;
 template <>
 struct Rtl<1> {
   using type = PipelineRtl<Vpipe_p1_check, Vpipe_p1_grid, Vpipe_p1_rectify, Vpipe_p1_disparity,
-                           Vpipe_p1_labelling, Vpipe_warning, Vpipe_merge, Vpipe_ground>;
+                           Vpipe_p1_labelling, Vpipe_warning, Vpipe_merge, Vpipe_ground,
+                           Vpipe_p1_road>;
   using top = Vpipe_p1_top;
 };
 template <>
 struct Rtl<2> {
   // The blocks whose only difference at P = 2 is their width run in the top (PipelineTop).
   using type = PipelineRtl<void, void, void, void, Vpipe_p2_labelling, Vpipe_warning,
-                           Vpipe_merge>;
+                           Vpipe_merge, void, Vpipe_p2_road>;
   using top = Vpipe_p2_top;
 };
 

@@ -20,6 +20,8 @@ foreach(p IN LISTS SCW_THESIS_RTL_PPC)
                STAGE labelling
                PARAMS MaxWidthPx=1280 MaxHeight=480 MaxTilesX=8 MaxTilesY=4 LabelsPerTile=32
                       MaxObjects=256 Lanes=${p} NO_TRACE)
+  scw_verilate(scw_rtl_pipeline_thesis TOP scw_road PREFIX Vthesis_p${p}_road STAGE road
+               PARAMS Ppc=${p} MaxWidthPx=1280 MaxHeight=480 NO_TRACE)
   if(NOT p EQUAL 1)
     target_compile_definitions(scw_rtl_pipeline_thesis INTERFACE SCW_THESIS_RTL_P${p}=1)
   endif()

@@ -25,6 +25,8 @@
 #include "Vthesis_p1_labelling_scw_labelling.h"
 #include "Vthesis_p1_rectify.h"
 #include "Vthesis_p1_rectify_scw_rectify.h"
+#include "Vthesis_p1_road.h"
+#include "Vthesis_p1_road_scw_road.h"
 #if SCW_THESIS_RTL_P2
 #include "Vthesis_p2_check.h"
 #include "Vthesis_p2_check_scw_frame_check.h"
@@ -36,6 +38,8 @@
 #include "Vthesis_p2_labelling_scw_labelling.h"
 #include "Vthesis_p2_rectify.h"
 #include "Vthesis_p2_rectify_scw_rectify.h"
+#include "Vthesis_p2_road.h"
+#include "Vthesis_p2_road_scw_road.h"
 #endif
 #if SCW_THESIS_RTL_P4
 #include "Vthesis_p4_check.h"
@@ -48,6 +52,8 @@
 #include "Vthesis_p4_labelling_scw_labelling.h"
 #include "Vthesis_p4_rectify.h"
 #include "Vthesis_p4_rectify_scw_rectify.h"
+#include "Vthesis_p4_road.h"
+#include "Vthesis_p4_road_scw_road.h"
 #endif
 
 namespace scw::sim::thesis_build {
@@ -60,8 +66,8 @@ using Check = typename FrameCheckModel<P, Build<P>::kMaxWidthPx, Build<P>::kMaxH
 
 /// The blocks of beat width P, each Verilated model checked against the build it stands for.
 template <int P, typename VCheck, typename VGrid, typename VRectify, typename VDisparity,
-          typename VLabelling, typename VFCheck, typename VFGrid, typename VFRectify,
-          typename VFDisparity, typename VFLabelling>
+          typename VLabelling, typename VRoad, typename VFCheck, typename VFGrid,
+          typename VFRectify, typename VFDisparity, typename VFLabelling, typename VFRoad>
 struct Blocks {
   static_assert(frame_check_params_match<VFCheck, Check<P>>());
   static_assert(map_grid_params_match<VFGrid, typename Build<P>::map_grid>());
@@ -69,8 +75,10 @@ struct Blocks {
   static_assert(disparity_params_match<VFDisparity,
                                        hls::disparity::Disparity<typename Build<P>::disparity>>());
   static_assert(labelling_params_match<VFLabelling, typename Build<P>::labelling>());
+  static_assert(road_params_match<VFRoad, typename Build<P>::road>());
   using type = PipelineRtl<VCheck, VGrid, VRectify, VDisparity, VLabelling, Vthesis_warning,
-                           Vthesis_merge, std::conditional_t<P == 1, Vthesis_ground, void>>;
+                           Vthesis_merge, std::conditional_t<P == 1, Vthesis_ground, void>,
+                           VRoad>;
 };
 
 static_assert(warning_params_match<Vthesis_warning_scw_warning, Build<1>::warning>());
@@ -79,10 +87,10 @@ static_assert(ground_params_match<Vthesis_ground_scw_ground, Build<1>::ground>()
 
 #define SCW_THESIS_BLOCKS(P)                                                                 \
   Blocks<P, Vthesis_p##P##_check, Vthesis_p##P##_grid, Vthesis_p##P##_rectify,               \
-         Vthesis_p##P##_disparity, Vthesis_p##P##_labelling,                                 \
+         Vthesis_p##P##_disparity, Vthesis_p##P##_labelling, Vthesis_p##P##_road,            \
          Vthesis_p##P##_check_scw_frame_check, Vthesis_p##P##_grid_scw_rectify_map_grid,     \
          Vthesis_p##P##_rectify_scw_rectify, Vthesis_p##P##_disparity_scw_disparity,         \
-         Vthesis_p##P##_labelling_scw_labelling>
+         Vthesis_p##P##_labelling_scw_labelling, Vthesis_p##P##_road_scw_road>
 
 template <int P>
 struct Rtl;

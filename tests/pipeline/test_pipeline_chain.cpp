@@ -19,6 +19,7 @@
 #include "host/pipeline/reference_chain.hpp"
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
+#include "host/road/run_model.hpp"
 #include "sim/pipeline_chain.hpp"
 #include "sim/pipeline_top.hpp"
 
@@ -59,6 +60,26 @@ scw::host::pipeline::StageOptions small_options() {
   return o;
 }
 
+/// A street for the road stage: a wall at disparity 2, a road rising 1 px every 2 rows from
+/// row 12 (0.5 px a row from a horizon at row 8), a box at 12 standing on it.
+scw::host::pipeline::SyntheticPair make_road_scene(int w, int h, std::uint32_t seed) {
+  std::vector<scw::host::pipeline::SyntheticBox> boxes;
+  for (int y = 12; y < h; ++y) boxes.push_back({0, y, w, y + 1, 2 + (y - 12) / 2});
+  boxes.push_back({w / 3, 6, w / 3 + w / 5, h - 4, 12});
+  return scw::host::pipeline::synthetic_pair(w, h, 2, boxes, seed);
+}
+
+/// small_options for make_road_scene: the camera 0.45 m above the road, so the nominal road
+/// (0.44 px a row) is not the scene's and the stage's fit has to move it; the horizon row 8.
+scw::host::pipeline::StageOptions road_options(int w) {
+  auto o = small_options();
+  o.camera_height_m = 0.45;
+  o.warning.cu_px = 0.5 * (w - 1);
+  o.warning.cv_px = 8.0;
+  o.road_min_count = 50;  // a 64 x 32 frame has 2,048 pixels
+  return o;
+}
+
 scw::sim::PipelineSetup small_setup(int w, int h, bool shifted_right) {
   auto left = scw::host::pipeline::identity_knots(w, h, Build<1>::kGridLog2);
   auto right = left;
@@ -76,21 +97,51 @@ std::vector<std::int64_t> result_cycles(const Chain<P>& c) {
   return v;
 }
 
+/// `road`: make_road_scene with road_options, and the road stage must have removed pixels and
+/// moved its road; otherwise make_scene with small_options.
 template <int P>
-void check_three_ways(int frames) {
+void check_three_ways(int frames, bool road = false) {
   const int w = 64, h = 32;
   std::vector<cv::Mat> ls, rs;
   for (int k = 0; k < frames; ++k) {
-    const auto s = make_scene(w, h, 11u + static_cast<std::uint32_t>(k));
+    const auto seed = 11u + static_cast<std::uint32_t>(k);
+    const auto s = road ? make_road_scene(w, h, seed) : make_scene(w, h, seed);
     ls.push_back(s.left);
     rs.push_back(s.right);
   }
   const auto left = scw::host::pipeline::frames_beats<P>(ls);
   const auto right = scw::host::pipeline::frames_beats<P>(rs);
-  const auto setup = small_setup(w, h, true);
+  auto setup = small_setup(w, h, true);
+  if (road) {
+    auto knots = scw::host::pipeline::identity_knots(w, h, Build<1>::kGridLog2);
+    setup = scw::host::pipeline::make_setup(w, h, Build<1>::kGridLog2, road_options(w), knots,
+                                            knots, 2);
+  }
 
   Chain<P> cpp(setup, PipelineEngines::all(Engine::cpp), left, right);
+  cpp.disparity().record(true);
+  cpp.road().record(true);
   cpp.run(static_cast<std::size_t>(frames), 200000);
+  if (road) {
+    // The road stage took road pixels out of every frame, and its fit moved the road.
+    std::size_t removed = 0;
+    const auto& in = cpp.disparity().recorded();
+    const auto& out = cpp.road().recorded();
+    REQUIRE(in.size() == out.size());
+    for (std::size_t i = 0; i < in.size(); ++i)
+      for (int k = 0; k < P; ++k) removed += in[i].px[k] != out[i].px[k];
+    CHECK(removed > static_cast<std::size_t>(frames * w * 3));
+    scw::road::RoadFilter f(setup.road);
+    cv::Mat map(h, w, CV_16UC1);
+    for (int k = 0; k < 2; ++k) {
+      for (int i = 0; i < w * h / P; ++i)
+        for (int j = 0; j < P; ++j)
+          map.at<std::uint16_t>(i * P / w, (i * P) % w + j) =
+              in[static_cast<std::size_t>(k * w * h / P + i)].px[j];
+      f.filter(map);
+    }
+    CHECK(f.road() != setup.road.nominal);
+  }
   Chain<P> rtl(setup, scw::sim::small_build::rtl_engines<P>(), left, right);
   rtl.run(static_cast<std::size_t>(frames), 200000);
   scw::sim::small_build::Top<P> top(setup);
@@ -156,6 +207,12 @@ TEST_CASE("C++ chain, RTL chain and the scw_pipeline top agree clock for clock, 
 TEST_CASE("C++ chain, RTL chain and the scw_pipeline top agree clock for clock, P = 2",
           "[pipeline][rtl]") {
   check_three_ways<2>(3);
+}
+
+TEST_CASE("with a road: the road stage removes it and follows it, C++ chain = RTL chain = top",
+          "[pipeline][rtl][road]") {
+  SECTION("P = 1") { check_three_ways<1>(3, true); }
+  SECTION("P = 2") { check_three_ways<2>(3, true); }
 }
 
 namespace {

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: Apache-2.0
+// Self-checking replay of a road golden vector set against scw_road: disparity frames driven
+// back to back with idle cycles, output backpressure, every output beat compared.
+`timescale 1ns / 1ps
+`default_nettype none
+
+// Run with the set's manifest.json config as plusargs: +vectors=<set folder> +width +height and
+// the RoadConfig fields +enable +nominal_a +nominal_b +a_min +a_max +h_min +h_max +tol_q4
+// +tol_rel_q8 +gate_q4 +gate_rel_q8 +min_count (decimal; nominal_b is negative). Parameters:
+// config.ppc, max_width_px, max_height (the build), beats (lines of in.hex and expected.hex),
+// frames and fit_clocks (for the timeout only). +stalls=0 turns the idle input cycles and the
+// backpressure off (to tell a stall bug from another).
+// Plain SystemVerilog that Verilator 5.006 and Icarus Verilog 11 (-g2012) both take: no `inside`,
+// no `int unsigned` parameters, no concurrent assertions.
+module tb_road_replay #(
+  parameter int Ppc        = 2,
+  parameter int MaxWidthPx = 64,
+  parameter int MaxHeight  = 48,
+  parameter int Beats      = 1536,
+  parameter int Frames     = 1,
+  parameter int FitClocks  = 256
+);
+  localparam int DataW = Ppc * 16;
+  // Generous: a beat a clock, a fit before every frame; the source idles 1 clock in 4 and the
+  // sink 3 in 7.
+  localparam int MaxCycles = 8 * Beats + 4 * (Frames + 1) * (FitClocks + 16) + 10000;
+  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the source's 4 and with any row length): bit k is
+  // the ready of cycles k mod 7.
+  localparam logic [6:0] ReadyPattern = 7'b1001011;
+
+  logic [DataW+1:0] in_mem  [Beats];  // {eol, sof, px[Ppc-1] .. px[0]}, 16-bit Q11.4 pixels
+  logic [DataW+1:0] exp_mem [Beats];
+  string dir;
+  int width, height, enable, nominal_a, nominal_b, a_min, a_max, h_min, h_max, tol_q4;
+  int tol_rel_q8, gate_q4, gate_rel_q8, min_count;
+  int stalls = 1;
+  int per_row = 1, per_frame = 1;  // beats
+  initial begin
+    if ($value$plusargs("stalls=%d", stalls)) begin end
+    if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
+        !$value$plusargs("enable=%d", enable) || !$value$plusargs("nominal_a=%d", nominal_a) ||
+        !$value$plusargs("nominal_b=%d", nominal_b) || !$value$plusargs("a_min=%d", a_min) ||
+        !$value$plusargs("a_max=%d", a_max) || !$value$plusargs("h_min=%d", h_min) ||
+        !$value$plusargs("h_max=%d", h_max) || !$value$plusargs("tol_q4=%d", tol_q4) ||
+        !$value$plusargs("tol_rel_q8=%d", tol_rel_q8) ||
+        !$value$plusargs("gate_q4=%d", gate_q4) ||
+        !$value$plusargs("gate_rel_q8=%d", gate_rel_q8) ||
+        !$value$plusargs("min_count=%d", min_count))
+      $fatal(1, "give the set's config: +width +height +enable +nominal_a +nominal_b +a_min ",
+             "+a_max +h_min +h_max +tol_q4 +tol_rel_q8 +gate_q4 +gate_rel_q8 +min_count");
+    if (width % Ppc != 0 || width > MaxWidthPx || height > MaxHeight)
+      $fatal(1, "a %0d x %0d frame does not fit the build (Ppc %0d, MaxWidthPx %0d, MaxHeight %0d)",
+             width, height, Ppc, MaxWidthPx, MaxHeight);
+    per_row = width / Ppc;
+    per_frame = per_row * height;
+    if (per_frame * Frames != Beats)
+      $fatal(1, "%0d frames of %0d x %0d at %0d px a beat are not %0d beats", Frames, width,
+             height, Ppc, Beats);
+    $readmemh({dir, "/in.hex"}, in_mem, 0, Beats - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
+  end
+
+  logic clk = 1'b0, rst_n = 1'b0;
+  always #4 clk = ~clk;  // 125 MHz
+  initial #20 rst_n = 1'b1;  // cfg_* are set at time 0, before reset ends, and stay
+
+  int cyc = 0;
+  always_ff @(posedge clk) cyc <= cyc + 1;
+
+  // The cfg ports from the plusargs, at the ports' widths (rtl_models/road/scw_road.sv): lines in
+  // code x 2^12 (the intercept signed), tolerances Q11.4, relative ones Q0.8.
+  logic [17:0] cfg_a0, cfg_a_min, cfg_a_max;
+  logic [31:0] cfg_b0;
+  logic [9:0]  cfg_h_min, cfg_h_max;
+  logic [14:0] cfg_tol, cfg_gate;
+  logic [7:0]  cfg_tol_rel, cfg_gate_rel;
+  logic [19:0] cfg_min_count;
+  assign cfg_a0 = 18'(nominal_a);
+  assign cfg_b0 = 32'(nominal_b);
+  assign cfg_a_min = 18'(a_min);
+  assign cfg_a_max = 18'(a_max);
+  assign cfg_h_min = 10'(h_min);
+  assign cfg_h_max = 10'(h_max);
+  assign cfg_tol = 15'(tol_q4);
+  assign cfg_tol_rel = 8'(tol_rel_q8);
+  assign cfg_gate = 15'(gate_q4);
+  assign cfg_gate_rel = 8'(gate_rel_q8);
+  assign cfg_min_count = 20'(min_count);
+
+  // Source: offers on 3 of 4 cycles; a beat once offered is held until taken (the stage holds a
+  // sof for the fit between frames).
+  int i = 0;
+  logic in_valid, in_ready, in_held = 1'b0;
+  logic [DataW+1:0] in_beat;
+  assign in_valid = rst_n && (i < Beats) && (((cyc % 4) != 3) || in_held || stalls == 0);
+  assign in_beat  = in_mem[(i < Beats) ? i : 0];
+  always_ff @(posedge clk) begin
+    in_held <= in_valid && !in_ready;
+    if (in_valid && in_ready) i <= i + 1;
+  end
+
+  // Sink: each beat taken must be the next line of expected.hex.
+  int o = 0;
+  logic out_valid, out_ready, out_sof, out_eol;
+  logic [DataW-1:0] out_data;
+  assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
+
+  scw_road #(
+    .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)
+  ) u_dut (
+    .clk_i(clk), .rst_ni(rst_n),
+    .cfg_road_enable_i(enable != 0), .cfg_road_a0_i(cfg_a0), .cfg_road_b0_i(cfg_b0),
+    .cfg_road_a_min_i(cfg_a_min), .cfg_road_a_max_i(cfg_a_max), .cfg_road_h_min_i(cfg_h_min),
+    .cfg_road_h_max_i(cfg_h_max), .cfg_road_tol_i(cfg_tol), .cfg_road_tol_rel_i(cfg_tol_rel),
+    .cfg_road_gate_i(cfg_gate), .cfg_road_gate_rel_i(cfg_gate_rel),
+    .cfg_road_min_count_i(cfg_min_count),
+    .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_beat[DataW-1:0]),
+    .in_sof_i(in_beat[DataW]), .in_eol_i(in_beat[DataW+1]),
+    .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
+    .out_sof_o(out_sof), .out_eol_o(out_eol)
+  );
+
+  // Names beat `k` by frame, row and first column, and the first pixel that differs with its
+  // input value (a removed pixel leaves as 0).
+  task automatic mismatch(input int k, input logic [DataW+1:0] got);
+    int p, first;
+    first = -1;
+    for (p = Ppc - 1; p >= 0; p = p - 1)
+      if (got[p*16 +: 16] !== exp_mem[k][p*16 +: 16]) first = p;
+    if (first >= 0)
+      $display("  pixel %0d (column %0d): got %h, expected %h, input %h", first,
+               (k % per_row) * Ppc + first, got[first*16 +: 16], exp_mem[k][first*16 +: 16],
+               in_mem[k][first*16 +: 16]);
+    $fatal(1, "beat %0d (frame %0d, row %0d, columns %0d..%0d): got %h, expected %h (eol, sof, px)",
+           k, k / per_frame, (k % per_frame) / per_row, (k % per_row) * Ppc,
+           (k % per_row) * Ppc + Ppc - 1, got, exp_mem[k]);
+  endtask
+
+  // A stalled beat must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
+  logic stalled = 1'b0;
+  logic [DataW+1:0] stalled_beat;
+  // Checkers are plain `always`: Icarus warns about system tasks inside always_ff.
+  always @(posedge clk) begin
+    if (stalled && (out_valid !== 1'b1 || {out_eol, out_sof, out_data} !== stalled_beat))
+      $fatal(1, "beat %0d: out_valid or the beat changed while stalled (cycle %0d)", o, cyc);
+    stalled <= out_valid && !out_ready;
+    stalled_beat <= {out_eol, out_sof, out_data};
+  end
+
+  always @(posedge clk) begin
+    if (cyc > MaxCycles)
+      $fatal(1, "timeout after %0d of %0d beats out (%0d in, cycle %0d)", o, Beats, i, cyc);
+    if (rst_n && out_valid === 1'bx) $fatal(1, "out_valid is x (cycle %0d)", cyc);
+    if (out_valid && out_ready) begin
+      if ({out_eol, out_sof, out_data} !== exp_mem[o]) mismatch(o, {out_eol, out_sof, out_data});
+      o <= o + 1;
+      if (o + 1 == Beats) begin
+        if (i != Beats) $fatal(1, "all beats out, but only %0d of %0d taken", i, Beats);
+        $display("PASS: %0d beats match %s (%0d frames, %0d cycles)", Beats, dir, Frames, cyc);
+        $finish;
+      end
+    end
+  end
+endmodule
