@@ -133,6 +133,7 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
     out.left = hw.left;
     out.right = hw.right;
     out.disparity = hw.disparity;
+    out.road_mask = hw.road_mask;
   } else if (maps_) {
     out.left = rectify::rectify_image(left_grey, maps_->left, maps_->lead_rows);
     out.right = rectify::rectify_image(right_grey, maps_->right, maps_->lead_rows);
@@ -152,13 +153,16 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
         road_ = std::make_unique<road::RoadFilter>(road::to_fixed(road::rig_setup(
             opt_.warning.baseline_m, opt_.warning.focal_px, cv, opt_.camera_height_m)));
       }
-      out.disparity = road_->filter(out.disparity);
+      const cv::Mat before = out.disparity;
+      out.disparity = road_->filter(before);
+      out.road_mask = road::removed_mask(before, out.disparity);
     }
     if (opt_.ground)
       out.disparity = ground::remove_ground(
           out.disparity,
           ground::default_ground_config(opt_.warning.baseline_m, opt_.camera_height_m));
   }
+  if (out.road_mask.empty()) out.road_mask = cv::Mat::zeros(out.disparity.size(), CV_8U);
   cv::Mat q4;
   out.disparity.convertTo(q4, CV_16UC1);  // negative (invalid) codes saturate to 0
   const int invalid = static_cast<std::int16_t>(hls::disparity::invalid_code(

@@ -79,6 +79,7 @@ struct TargetReport {
 struct FrameOutput {
   cv::Mat left, right;  // rectified grey
   cv::Mat disparity;    // CV_16S, Q11.4 (after the road stage, and ground removal when on)
+  cv::Mat road_mask;    // CV_8U, 255 where the road stage removed a valid disparity
   labelling::Segmentation segmentation;
   hls::warning::FrameResult result;  // the warning stage's word
   bool input_error = false;          // the pipeline's input checks flagged this pair
@@ -92,7 +93,8 @@ struct FrameOutput {
 /// pair: the rectified pair, the disparity map, the object table and the frame result.
 struct StageOutputs {
   cv::Mat left, right;  // rectified grey
-  cv::Mat disparity;    // CV_16S, Q11.4
+  cv::Mat disparity;    // CV_16S, Q11.4, what the labelling stage took
+  cv::Mat road_mask;    // CV_8U, 255 where the road stage removed a valid disparity
   std::vector<hls::labelling::Object> objects;  // as the stage emitted them
   hls::labelling::FrameStatus status;
   hls::warning::FrameResult result;

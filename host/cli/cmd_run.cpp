@@ -175,6 +175,7 @@ void write_frame(const fs::path& dir, const std::string& prefix, const app::Fram
   write_image(dir / (prefix + "labels.png"), f.segmentation.labels);
   write_image(dir / (prefix + "labels_color.png"), labelling::colour_labels(f.segmentation.labels));
   write_image(dir / (prefix + "overlay.png"), f.overlay);
+  write_image(dir / (prefix + "road.png"), road::road_picture(f.left, f.road_mask));
   write_objects_csv(dir / (prefix + "objects.csv"), f);
 }
 

@@ -80,6 +80,7 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
     chain.rect_left().record(true);
     chain.rect_right().record(true);
     chain.disparity().record(true);
+    chain.road().record(true);
     chain.labelling_input().record(true);  // the disparity, after ground removal when on
     chain.objects().record(true);
     chain.run(1, 64 * static_cast<std::int64_t>(width) * height + 1000000);
@@ -90,8 +91,11 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
     road::RoadFilter road(frame_setup.road);
     const cv::Mat filtered =
         road.filter(picture(chain.disparity().recorded(), width, height, CV_16S));
-    if (!setup.ground && cv::countNonZero(filtered != s.disparity) != 0)
+    const cv::Mat road_out = picture(chain.road().recorded(), width, height, CV_16S);
+    if (cv::countNonZero(filtered != road_out) != 0)
       throw std::logic_error("the engine's road stage differs from the C++ road model");
+    s.road_mask = road::removed_mask(picture(chain.disparity().recorded(), width, height, CV_16S),
+                                     road_out);
     line = road.next_road();
     for (const auto& w : chain.objects().recorded()) {
       if (w.data.is_status) s.status = w.data.status;

@@ -3,6 +3,8 @@
 #include "host/road/run_model.hpp"
 
 #include <stdexcept>
+
+#include <opencv2/imgproc.hpp>
 #include <string>
 
 namespace scw::road {
@@ -32,6 +34,26 @@ cv::Mat RoadFilter::filter(const cv::Mat& q4) {
     }
   }
   return out;
+}
+
+cv::Mat removed_mask(const cv::Mat& before, const cv::Mat& after) {
+  if (before.size() != after.size() || before.depth() != after.depth() ||
+      (before.type() != CV_16UC1 && before.type() != CV_16SC1))
+    throw std::invalid_argument("road: removed_mask needs two 16-bit maps of one size");
+  // The bit patterns as int16: invalid codes are 0 or negative.
+  const cv::Mat b(before.size(), CV_16SC1, before.data, before.step);
+  const cv::Mat a(after.size(), CV_16SC1, after.data, after.step);
+  return (b > 0) & (a == 0);
+}
+
+cv::Mat road_picture(const cv::Mat& left_grey, const cv::Mat& mask) {
+  cv::Mat bgr;
+  cv::cvtColor(left_grey, bgr, cv::COLOR_GRAY2BGR);
+  cv::Mat tint(bgr.size(), bgr.type(), cv::Scalar(0, 200, 0));
+  cv::Mat mixed;
+  cv::addWeighted(bgr, 0.5, tint, 0.5, 0.0, mixed);
+  mixed.copyTo(bgr, mask);
+  return bgr;
 }
 
 hls::road::Line RoadFilter::next_road() const {

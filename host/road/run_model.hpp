@@ -16,6 +16,14 @@ using HostParams = hls::road::RoadParams<1, 2048, 1024>;
 
 /// Frames in order through one hls::road::Road: each map leaves with the pixels on the road of
 /// the frames before it set to 0, and gives the road for the next.
+/// 255 where `before` held a valid disparity (positive as int16) that `after` has as 0: the
+/// pixels the road stage removed. Both CV_16U or CV_16S of one size.
+cv::Mat removed_mask(const cv::Mat& before, const cv::Mat& after);
+
+/// The left image in grey with the pixels `mask` marks tinted green: what the road stage took
+/// out, for a person to look at.
+cv::Mat road_picture(const cv::Mat& left_grey, const cv::Mat& mask);
+
 class RoadFilter {
  public:
   explicit RoadFilter(const RoadConfig& cfg) : k_(cfg) {}

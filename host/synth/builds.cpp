@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
-/// The five stage modules and the top at one build.
+/// The stage modules and the top at one build.
 template <class P>
 std::vector<ModuleRun> modules_of() {
   return {
@@ -50,6 +50,8 @@ std::vector<ModuleRun> modules_of() {
         {"LabelsPerTile", P::kLabelsPerTile},
         {"MaxObjects", P::kMaxObjects},
         {"Lanes", P::kPpc}}},
+      {"scw_road",
+       {{"Ppc", P::kPpc}, {"MaxWidthPx", P::kMaxWidthPx}, {"MaxHeight", P::kMaxHeight}}},
       {"scw_warning", {{"MaxDisparityPx", P::kMaxDisparityPx}}},
       {kTop,
        {{"Ppc", P::kPpc},
