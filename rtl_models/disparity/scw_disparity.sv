@@ -27,7 +27,7 @@ module scw_disparity #(
   parameter int unsigned NumDisp    /*verilator public*/ = 4,
   localparam int unsigned PixW     = scw_pkg::PixelBits,
   localparam int unsigned BeatW    = Ppc * PixW,
-  localparam int unsigned OutW     = Ppc * 16,
+  localparam int unsigned OutW     = Ppc * scw_pkg::DispBits,
   localparam int unsigned WW       = $clog2(MaxWidthPx + 1),
   localparam int unsigned HW       = $clog2(MaxHeight + 1),
   localparam int unsigned NumW     = $clog2(NumDisp + 1)

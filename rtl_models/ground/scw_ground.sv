@@ -25,7 +25,7 @@
 // cfg_* are static: set them before rst_ni rises.
 module scw_ground #(
   parameter int unsigned MaxWidthPx /*verilator public*/ = 64,
-  localparam int unsigned DispW = 16  // Q11.4 two's complement, invalid = 0 or negative
+  localparam int unsigned DispW = scw_pkg::DispBits
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,

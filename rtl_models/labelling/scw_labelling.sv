@@ -36,7 +36,7 @@ module scw_labelling #(
   parameter int unsigned LabelsPerTile /*verilator public*/ = 16,
   parameter int unsigned MaxObjects    /*verilator public*/ = 16,
   parameter int unsigned Lanes         /*verilator public*/ = 1,
-  localparam int unsigned OutW = 1 + 32 + 10 * 16 + 9 * 64  // sim/labelling_pack.hpp
+  localparam int unsigned OutW = scw_pkg::ObjWordBits
 ) (
   input  logic            clk_i,
   input  logic            rst_ni,

@@ -39,15 +39,15 @@ module scw_pipeline #(
   localparam int unsigned KRows    = ((MaxHeight - 1) >> GridLog2) + 2,
   localparam int unsigned KAddrW   = $clog2(KRows) + $clog2(KCols),
   localparam int unsigned KnotW    = 2 * KBits,
-  localparam int unsigned BeatW    = Ppc * 8,
-  localparam int unsigned DispW    = Ppc * 16,
+  localparam int unsigned BeatW    = Ppc * scw_pkg::PixelBits,
+  localparam int unsigned DispW    = Ppc * scw_pkg::DispBits,
   localparam int unsigned WW       = $clog2(MaxWidthPx + 1),
   localparam int unsigned HW       = $clog2(MaxHeight + 1),
   localparam int unsigned NumW     = $clog2(NumDisp + 1),
   localparam int unsigned SlotW    = $clog2(RectRows),
-  localparam int unsigned ObjW     = 1 + 32 + 10 * 16 + 9 * 64,  // sim/labelling_pack.hpp
-  localparam int unsigned ResW     = 2 + 5 + 3 * 16 + 32 + 7 * 16,  // sim/warning_pack.hpp
-  localparam int unsigned OutW     = ResW + 2                        // sim/pipeline_pack.hpp
+  localparam int unsigned ObjW     = scw_pkg::ObjWordBits,
+  localparam int unsigned ResW     = scw_pkg::ResultWordBits,
+  localparam int unsigned OutW     = scw_pkg::PipeResultBits
 ) (
   input  logic               clk_i,
   input  logic               rst_ni,

@@ -25,7 +25,7 @@ module scw_pipeline_camera #(
   localparam int unsigned KRows         = ((MaxHeight - 1) >> GridLog2) + 2,
   localparam int unsigned KAddrW        = $clog2(KRows) + $clog2(KCols),
   localparam int unsigned KnotW         = 2 * KBits,
-  localparam int unsigned BeatW         = Ppc * 8,
+  localparam int unsigned BeatW         = Ppc * scw_pkg::PixelBits,
   localparam int unsigned MapW          = Ppc * 2 * CoordBits,
   localparam int unsigned WW            = $clog2(MaxWidthPx + 1),
   localparam int unsigned HW            = $clog2(MaxHeight + 1),

@@ -7,7 +7,7 @@
 // here. One output register under one enable; the three inputs are taken together (the C++
 // twin is hls::pipeline::ResultMerge).
 module scw_result_merge #(
-  parameter int unsigned ResW /*verilator public*/ = 199,
+  parameter int unsigned ResW /*verilator public*/ = scw_pkg::ResultWordBits,
   localparam int unsigned OutW = ResW + 2
 ) (
   input  logic            clk_i,

@@ -29,7 +29,7 @@ module scw_road #(
   parameter int unsigned Ppc        /*verilator public*/ = 1,   // disparities a beat
   parameter int unsigned MaxWidthPx /*verilator public*/ = 64,  // <= 2048
   parameter int unsigned MaxHeight  /*verilator public*/ = 48,  // <= 1024
-  localparam int unsigned DispW = 16,  // Q11.4 two's complement, invalid = 0 or negative
+  localparam int unsigned DispW = scw_pkg::DispBits,
   localparam int unsigned DataW = Ppc * DispW
 ) (
   input  logic             clk_i,

@@ -22,8 +22,8 @@
 // word (the C++ adapter sets them before reset).
 module scw_warning #(
   parameter int unsigned MaxDisparityPx /*verilator public*/ = 64,
-  localparam int unsigned InW  = 1 + 32 + 10 * 16 + 9 * 64,  // sim/labelling_pack.hpp
-  localparam int unsigned OutW = 2 + 5 + 3 * 16 + 32 + 7 * 16  // sim/warning_pack.hpp
+  localparam int unsigned InW  = scw_pkg::ObjWordBits,
+  localparam int unsigned OutW = scw_pkg::ResultWordBits
 ) (
   input  logic               clk_i,
   input  logic               rst_ni,

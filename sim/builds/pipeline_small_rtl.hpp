@@ -21,6 +21,7 @@
 #include "Vpipe_p1_road_scw_road.h"
 #include "Vpipe_p1_top.h"
 #include "Vpipe_p1_top_scw_pipeline.h"
+#include "Vpipe_p1_top_scw_pkg.h"
 #include "Vpipe_p2_labelling.h"
 #include "Vpipe_p2_labelling_scw_labelling.h"
 #include "Vpipe_p2_road.h"
@@ -55,6 +56,15 @@ static_assert(warning_params_match<Vpipe_warning_scw_warning, Build<1>::warning>
 static_assert(result_merge_params_match<Vpipe_merge_scw_result_merge>());
 static_assert(ground_params_match<Vpipe_ground_scw_ground, Build<1>::ground>());
 static_assert(pipeline_params_match<Vpipe_p1_top_scw_pipeline, Build<1>>());
+// The words between the stages: scw_pkg's widths, the one list the RTL takes them from, equal
+// to the C++ packs'.
+static_assert(Vpipe_p1_top_scw_pkg::ObjWordBits ==
+              BeatLayout<hls::labelling::LabelPacket>::kPayloadBits);
+static_assert(Vpipe_p1_top_scw_pkg::ResultWordBits ==
+              BeatLayout<hls::warning::ResultPacket>::kPayloadBits);
+static_assert(Vpipe_p1_top_scw_pkg::PipeResultBits ==
+              BeatLayout<hls::pipeline::PipelineResultPacket>::kPayloadBits);
+static_assert(Vpipe_p1_top_scw_pkg::DispBits == 8 * sizeof(hls::road::disp_t));
 static_assert(pipeline_params_match<Vpipe_p2_top_scw_pipeline, Build<2>>());
 
 template <int P>
