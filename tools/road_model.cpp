@@ -32,6 +32,7 @@
 #include "host/labelling/picture.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/rectify/calibration.hpp"
+#include "host/reference/road_ref.hpp"
 #include "host/road/run_model.hpp"
 #include "host/road/setup.hpp"
 #include "host/warning/run_model.hpp"
@@ -223,7 +224,6 @@ int main(int argc, char** argv) {
     rs.tol_px = s.tol_px;
     rs.tol_rel = s.tol_rel;
     scw::road::RoadFilter stage(scw::road::to_fixed(rs));
-    constexpr double kUnit = 16.0 * (1 << scw::hls::road::kFracBits);
     int agree = 0, street = 0, frames = 0;
     std::map<std::string, int> decided;
     for (const auto& t : truth) {
@@ -237,7 +237,8 @@ int main(int argc, char** argv) {
       cv::Mat kept;
       if (rule == "stage") {
         kept = stage.filter(q4);
-        road = Line{stage.road().a / kUnit, stage.road().b / kUnit};
+        const auto px = scw::reference::to_px(stage.road());
+        road = Line{px.a, px.b};
         if (off) kept = q4;
       } else {
         kept = off ? q4 : remove_road(q4, road, s);

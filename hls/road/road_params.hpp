@@ -19,6 +19,8 @@ using disp_t = std::uint16_t;
 /// (Q11.4 code, 12 more bits), so a slope of 0.45 px a row is 29,491 and 480 rows of it add up
 /// with an error under 1/8 code.
 inline constexpr int kFracBits = 12;
+/// One px of disparity in a line's units (code x 2^12), for the host's conversions.
+inline constexpr double kPxUnit = 16.0 * (1 << kFracBits);
 /// Slopes below 2^18 (4 px a row, about 9 times a car camera's road) and intercepts within
 /// +-2^28 (a fitted one is at most a_max x h_max < 2^28): every band line and, with rows below
 /// 1,024, every row value stays inside a signed 32-bit integer.

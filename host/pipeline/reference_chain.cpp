@@ -39,8 +39,7 @@ ReferenceFrame reference_frame(const cv::Mat& left, const cv::Mat& right, int wi
                                   opt.camera_height_m);
     rsetup.min_count = opt.road_min_count;
     const auto rcfg = road::to_fixed(rsetup);
-    const double unit = 16.0 * (1 << hls::road::kFracBits);
-    f.road = {rcfg.nominal.a / unit, rcfg.nominal.b / unit};
+    f.road = reference::to_px(rcfg.nominal);
     const cv::Mat map = f.disparity.clone();
     for (int k = 0; k < frames; ++k) {
       const auto r = reference::road_reference(map, f.road, rcfg);

@@ -11,8 +11,7 @@ RoadFrameRef road_reference(const cv::Mat& q4, const RoadLinePx& road,
                             const hls::road::RoadConfig& cfg) {
   if (q4.empty() || (q4.type() != CV_16UC1 && q4.type() != CV_16SC1))
     throw std::invalid_argument("road reference: a 16-bit map of disparity x 16 is needed");
-  const double unit = 16.0 * (1 << hls::road::kFracBits);  // px in the configuration's lines
-  const double tol = cfg.tol_q4 / 16.0, tol_rel = cfg.tol_rel_q8 / 256.0;
+  const double unit = hls::road::kPxUnit;  const double tol = cfg.tol_q4 / 16.0, tol_rel = cfg.tol_rel_q8 / 256.0;
   const double gate = cfg.gate_q4 / 16.0, gate_rel = cfg.gate_rel_q8 / 256.0;
   RoadFrameRef r;
   r.kept = q4.clone();

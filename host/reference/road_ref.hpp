@@ -13,6 +13,11 @@ struct RoadLinePx {
   double a = 0.0, b = 0.0;
 };
 
+/// A fixed-point line (code x 2^12) in px.
+constexpr RoadLinePx to_px(const hls::road::Line& l) {
+  return {l.a / hls::road::kPxUnit, l.b / hls::road::kPxUnit};
+}
+
 /// One frame of the road stage by its definition (docs/road.md), written independently of
 /// hls::road in doubles: `road` is the frame's road; `kept` the map without the pixels within
 /// tol + tol_rel d_road of it (rows where d_road >= 1 px, cfg.enable); `next` the least-squares

@@ -9,7 +9,7 @@
 namespace scw::road {
 namespace {
 
-constexpr double kUnit = 16.0 * (1 << hls::road::kFracBits);  // one px of disparity, code x 2^12
+constexpr double kUnit = hls::road::kPxUnit;
 
 void positive(double v, const char* name) {
   if (!(v > 0.0) || !std::isfinite(v))

@@ -52,7 +52,7 @@ inline cv::Mat road_map(const RoadScene& s, std::uint32_t seed) {
 /// plausible for slopes within half to twice `slope` and horizons within +-8 rows.
 inline hls::road::RoadConfig road_config(const RoadScene& s, double slope_error, double shift,
                                          std::uint32_t min_count = 50) {
-  const double unit = 16.0 * (1 << hls::road::kFracBits);
+  const double unit = hls::road::kPxUnit;
   hls::road::RoadConfig c;
   const double a = s.slope * slope_error;
   c.nominal.a = static_cast<std::int32_t>(std::lround(a * unit));

@@ -31,13 +31,12 @@ using Kernel = hls::road::Road<RoadVecParams>;
 using Model = sim::RoadModel<RoadVecParams>;
 
 constexpr int kMinFrames = 4;
-constexpr int kUnitShift = 4 + hls::road::kFracBits;  // 1 px of disparity is 2^16 line units
-constexpr double kUnit = double(1 << kUnitShift);
+constexpr double kUnit = hls::road::kPxUnit;
 // How far the model's road may lie from the reference's, over the frame's rows, before the set
 // is refused (tests/road's "1/100 px over the frame").
 constexpr double kRoadTolerancePx = 0.01;
 
-reference::RoadLinePx px(const Line& l) { return {l.a / kUnit, l.b / kUnit}; }
+reference::RoadLinePx px(const Line& l) { return reference::to_px(l); }
 
 /// The largest distance between two lines over rows 0 .. height - 1, in px.
 double distance_px(const reference::RoadLinePx& x, const reference::RoadLinePx& y, int height) {

@@ -166,7 +166,7 @@ module scw_road_fit #(
   // ---- the plausibility checks -----------------------------------------------------------------
   // Each check is registered (its wait state gives it the clock): a compare, then the control's
   // decisions and the units' start and operand muxes, would make the longest paths (3.7 ns).
-  logic keep_check, keep_check_q, keep_a, keep_a_q, keep_b, keep_b_q;
+  logic keep_check, keep_check_q, keep_a, keep_a_q, keep_b, keep_b_q, refuse;
   assign keep_check = (n_i < 22'(min_count_i)) || diff0[63] || (diff0 == '0) || num[68] ||
                       (num == '0);
   assign keep_a     = ovf_a || (qa < a_min_i) || (qa > a_max_i);
@@ -188,6 +188,7 @@ module scw_road_fit #(
     div_a_start = 1'b0;
     div_b_start = 1'b0;
     band_start  = 1'b0;
+    refuse      = 1'b0;
     unique case (state_q)
       StIdle: begin
         if (start_i) begin
@@ -200,11 +201,8 @@ module scw_road_fit #(
       StSub:      state_d = StSubFlags;  // u_sub_*: the differences two clocks after the products
       StSubFlags: state_d = StCheck;     // keep_check_q: their checks registered
       StCheck: begin
-        if (keep_check_q) begin
-          line_a_d = keep_a_i;
-          line_b_d = keep_b_i;
-          state_d  = StBand;
-        end else begin
+        refuse = keep_check_q;
+        if (!keep_check_q) begin
           div_a_start = 1'b1;
           state_d     = StDivA;
         end
@@ -212,11 +210,8 @@ module scw_road_fit #(
       StDivA:      if (!div_a_busy) state_d = StDivAFlags;
       StDivAFlags: state_d = StCheckA;  // keep_a_q
       StCheckA: begin
-        if (keep_a_q) begin
-          line_a_d = keep_a_i;
-          line_b_d = keep_b_i;
-          state_d  = StBand;
-        end else begin
+        refuse = keep_a_q;
+        if (!keep_a_q) begin
           mul_c_start = 1'b1;
           line_a_d    = qa;
           state_d     = StMulC;
@@ -225,11 +220,8 @@ module scw_road_fit #(
       StMulC:   if (!(sv_busy || ah0_busy || ah1_busy)) state_d = StSubC;
       StSubC:   state_d = StCheckC;
       StCheckC: begin
-        if (diff0[63]) begin
-          line_a_d = keep_a_i;
-          line_b_d = keep_b_i;
-          state_d  = StBand;
-        end else begin
+        refuse = diff0[63];  // c < 0: the horizon above row 0
+        if (!diff0[63]) begin
           div_b_start = 1'b1;
           state_d     = StDivB;
         end
@@ -237,12 +229,8 @@ module scw_road_fit #(
       StDivB:      if (!div_b_busy) state_d = StDivBFlags;
       StDivBFlags: state_d = StCheckB;  // keep_b_q
       StCheckB: begin
-        if (keep_b_q) begin
-          line_a_d = keep_a_i;
-          line_b_d = keep_b_i;
-        end else begin
-          line_b_d = -{4'b0, nb};
-        end
+        refuse = keep_b_q;
+        if (!keep_b_q) line_b_d = -{4'b0, nb};
         state_d = StBand;
       end
       StBand: begin
@@ -257,6 +245,12 @@ module scw_road_fit #(
       end
       default: state_d = StIdle;
     endcase
+    // A check that fails keeps the road the stage had, and its bands are formed again.
+    if (refuse) begin
+      line_a_d = keep_a_i;
+      line_b_d = keep_b_i;
+      state_d  = StBand;
+    end
   end
 
   always_ff @(posedge clk_i) begin

@@ -24,9 +24,9 @@ using scw::hls::road::Line;
 using scw::hls::road::RoadConfig;
 using scw::reference::RoadLinePx;
 
-constexpr double kUnit = 16.0 * (1 << scw::hls::road::kFracBits);
-
-RoadLinePx px(const Line& l) { return {l.a / kUnit, l.b / kUnit}; }
+constexpr double kUnit = scw::hls::road::kPxUnit;
+using scw::reference::to_px;
+RoadLinePx px(const Line& l) { return to_px(l); }
 
 /// Pixels where the kernel and the reference disagree, leaving out those within 1/64 px of
 /// either band's edge (where the kernel's rounding of its lines may decide the other way).

@@ -122,6 +122,16 @@ std::vector<typename Params::in_beat> map_beats(const std::vector<cv::Mat>& maps
   return v;
 }
 
+/// The 32 x 24 road of the stage tests (MaxWidthPx 32, MaxHeight 24), its horizon at row 4.
+RoadScene small_scene(double slope) {
+  RoadScene s;
+  s.width = 32;
+  s.height = 24;
+  s.slope = slope;
+  s.horizon = 4;
+  return s;
+}
+
 std::vector<cv::Mat> road_maps(const RoadScene& s, std::uint32_t seed, int frames) {
   std::vector<cv::Mat> maps;
   for (int f = 0; f < frames; ++f) maps.push_back(scw::fixtures::road_map(s, seed + f));
@@ -458,11 +468,7 @@ TEST_CASE("scw_road_fit equals fit_line and band on planted, random and edge-cas
 
 TEST_CASE("scw_road equals the model clock for clock while the fits move the road",
           "[road][rtl]") {
-  RoadScene scene;
-  scene.width = 32;
-  scene.height = 24;
-  scene.slope = 1.2;
-  scene.horizon = 4;
+  RoadScene scene = small_scene(1.2);
   scene.noise = 0.3;
   scene.objects = 2;
   const std::vector<std::pair<double, double>> starts = {{0.8, 2.0}, {1.3, -2.0}, {1.0, 0.0}};
@@ -516,11 +522,7 @@ TEST_CASE("scw_road equals the model clock for clock while the fits move the roa
 
 TEST_CASE("scw_road keeps its road when the fit is implausible, like the model",
           "[road][rtl]") {
-  RoadScene scene;
-  scene.width = 32;
-  scene.height = 24;
-  scene.slope = 1.0;
-  scene.horizon = 4;
+  RoadScene scene = small_scene(1.0);
   scene.objects = 0;
   RoadConfig cfg = scw::fixtures::road_config(scene, 1.0, 0.0, 20);
   RoadScene wrong = scene;
@@ -549,11 +551,7 @@ TEST_CASE("scw_road keeps its road when the fit is implausible, like the model",
 
 TEST_CASE("scw_road keeps its road when too few pixels are in the gate, like the model",
           "[road][rtl]") {
-  RoadScene scene;
-  scene.width = 32;
-  scene.height = 24;
-  scene.slope = 1.0;
-  scene.horizon = 4;
+  RoadScene scene = small_scene(1.0);
   const RoadConfig cfg = scw::fixtures::road_config(scene, 0.9, 1.0, 5000);
   const auto beats = map_beats<Params2>(road_maps(scene, 3, 3));
   const auto t = trace_kernel<Params2>(beats, cfg);
@@ -587,11 +585,7 @@ TEST_CASE("scw_road equals the model clock for clock on random maps of several s
 
 TEST_CASE("scw_road takes a beat a clock, and each fit holds a sof kFitClocks + 1 clocks",
           "[road][rtl]") {
-  RoadScene scene;
-  scene.width = 32;
-  scene.height = 24;
-  scene.slope = 1.2;
-  scene.horizon = 4;
+  RoadScene scene = small_scene(1.2);
   const RoadConfig cfg = scw::fixtures::road_config(scene, 0.9, 1.0, 20);
   const auto beats = map_beats<Params2>(road_maps(scene, 90, 3));
   std::int64_t cycles = 0;
