@@ -12,12 +12,13 @@ namespace scw::sim {
 
 /// Payload, least significant first: is_status (1 bit), then for an object area (32), x_min,
 /// x_max, y_min, y_max, d_min, d_max, closest_x, closest_y, first_x, first_y (16 each),
-/// m10, m01, m20, m11, m02, m30, m21, m12, m03 (64 each); for the status word objects (32),
+/// m10, m01, m20, m11, m02, m30, m21, m12, m03, sum_d, sum_dd (64 each); for the status word
+/// objects (32),
 /// tile_overflow, object_overflow, stream_error (1 each), the rest zero.
 template <>
 struct BeatLayout<hls::Packet<hls::labelling::LabelWord>> {
   using beat_t = hls::Packet<hls::labelling::LabelWord>;
-  static constexpr int kPayloadBits = 1 + 32 + 10 * 16 + 9 * 64;  // 769
+  static constexpr int kPayloadBits = 1 + 32 + 10 * 16 + 11 * 64;  // 897
   static constexpr int kBits = kPayloadBits + 1;
 
   static Bits payload(const beat_t& b) {
@@ -39,7 +40,8 @@ struct BeatLayout<hls::Packet<hls::labelling::LabelWord>> {
       w.set(at, 16, v);
       at += 16;
     }
-    for (std::uint64_t v : {o.m10, o.m01, o.m20, o.m11, o.m02, o.m30, o.m21, o.m12, o.m03}) {
+    for (std::uint64_t v :
+         {o.m10, o.m01, o.m20, o.m11, o.m02, o.m30, o.m21, o.m12, o.m03, o.sum_d, o.sum_dd}) {
       w.set(at, 64, v);
       at += 64;
     }
@@ -66,7 +68,7 @@ struct BeatLayout<hls::Packet<hls::labelling::LabelWord>> {
       at += 16;
     }
     for (std::uint64_t* v : {&o.m10, &o.m01, &o.m20, &o.m11, &o.m02, &o.m30, &o.m21, &o.m12,
-                             &o.m03}) {
+                             &o.m03, &o.sum_d, &o.sum_dd}) {
       *v = w.get(at, 64);
       at += 64;
     }

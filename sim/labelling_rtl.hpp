@@ -18,7 +18,8 @@ constexpr bool labelling_widths_match(const hls::labelling::DescWidths& w) {
   return VM::AreaW == w.area && VM::PosXW == w.x && VM::PosYW == w.y && VM::DispW == w.d &&
          VM::M10W == w.m[0] && VM::M01W == w.m[1] && VM::M20W == w.m[2] && VM::M11W == w.m[3] &&
          VM::M02W == w.m[4] && VM::M30W == w.m[5] && VM::M21W == w.m[6] && VM::M12W == w.m[7] &&
-         VM::M03W == w.m[8] && VM::DescW == w.total();
+         VM::M03W == w.m[8] && VM::SumDW == w.sum_d && VM::SumDDW == w.sum_dd &&
+         VM::DescW == w.total();
 }
 
 /// `VM` is a Verilated scw_labelling module class (its /*verilator public*/ parameters are

@@ -339,6 +339,9 @@ class PipelineChain {
 
   void add_warning(Engine e, Fifo<hls::warning::ResultPacket>& res) {
     using Params = typename Build::warning;
+    static_assert(Build::labelling::kWidths.area <= hls::warning::kRuleAreaBits,
+                  "the warning stage's distance rule reads kRuleAreaBits of an object's area: a "
+                  "labelling build of at most 2^20 - 1 pixels");
     if (e == Engine::cpp) {
       hls::warning::check_config<Params>(setup_.warning);
       sim_.add<StreamComponent<WarningModel<Params>>>("warning", WarningModel<Params>(setup_.warning),

@@ -21,7 +21,7 @@ namespace scw::sim {
 template <typename VM, typename Params>
 constexpr bool warning_params_match() {
   return VM::MaxDisparityPx == Params::kMaxDisparityPx && VM::TableSize == Params::kTableSize &&
-         VM::Latency == hls::warning::kLatency;
+         VM::RuleLatency == hls::warning::kRuleLatency && VM::Latency == hls::warning::kLatency;
 }
 
 /// Sets the cfg_* ports of the warning stage (scw_warning, or a top that passes them on).
@@ -41,6 +41,8 @@ void drive_warning_cfg(VM& m, const hls::warning::WarningConfig& cfg) {
   m.cfg_near_mm_i = cfg.near_mm;
   m.cfg_min_height_mm_i = cfg.min_height_mm;
   m.cfg_d_limit_q4_i = cfg.d_limit_q4;
+  m.cfg_rule_i = static_cast<std::uint8_t>(cfg.rule);
+  m.cfg_spread_i = cfg.spread_q4;
 }
 
 /// A Verilated scw_warning as a cycle model, interchangeable with sim::WarningModel. RtlStream

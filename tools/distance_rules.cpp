@@ -5,7 +5,8 @@
 // object's distance with each candidate rule: the largest disparity (the thesis's closest
 // point, what the warning stage uses today), the mean, and percentiles of the object's
 // disparities. All coordinates of an object scale with 1 / d, so a rule's distance is
-// (D + z_v) * d_max / d_rule - z_v with D the run's distance and z_v the bumper's offset.
+// (D + z_v) * d_run / d_rule - z_v with D the run's distance, d_run the disparity that placed it
+// (NNNN_objects.csv's deciding row: d_max under the thesis's rule) and z_v the bumper's offset.
 // docs/scene.md ("A robust distance") reports its output; the rule was chosen on one preset
 // and reported on the others.
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,31 @@ double quantile(const std::vector<int>& sorted, double q) {
   const auto n = sorted.size();
   const auto k = static_cast<std::size_t>(std::ceil(q * static_cast<double>(n)));
   return sorted[std::min(n - 1, k == 0 ? 0 : k - 1)];
+}
+
+/// The "disparity" column of the deciding row of a NNNN_objects.csv `scw run` wrote.
+double deciding_disparity(const fs::path& p) {
+  std::ifstream f(p);
+  std::string line;
+  if (!std::getline(f, line)) throw std::runtime_error("'" + p.string() + "' is empty");
+  auto split = [](const std::string& l) {
+    std::vector<std::string> out;
+    std::stringstream ss(l);
+    for (std::string c; std::getline(ss, c, ',');) out.push_back(c);
+    return out;
+  };
+  const auto head = split(line);
+  const auto col = [&](const char* n) {
+    const auto it = std::find(head.begin(), head.end(), n);
+    if (it == head.end()) throw std::runtime_error("'" + p.string() + "' has no column " + n);
+    return static_cast<std::size_t>(it - head.begin());
+  };
+  const std::size_t disp = col("disparity"), deciding = col("deciding");
+  while (std::getline(f, line)) {
+    const auto row = split(line);
+    if (row.size() == head.size() && row[deciding] == "1") return std::stod(row[disp]);
+  }
+  throw std::runtime_error("'" + p.string() + "' has no deciding object");
 }
 
 struct Rule {
@@ -77,9 +104,11 @@ int main(int argc, char** argv) {
     const auto truth = read_jsonl(truth_file);
     std::map<int, nlohmann::json> truth_by_frame;
     for (const auto& t : truth) truth_by_frame[t.at("frame").get<int>()] = t;
-    std::vector<Rule> rules{{"max (today)", {}, 0}, {"mean", {}, 0}, {"median", {}, 0},
+    std::vector<Rule> rules{{"max (closest)", {}, 0}, {"mean", {}, 0}, {"median", {}, 0},
                             {"p75", {}, 0},         {"p90", {}, 0},  {"p95", {}, 0},
-                            {"p99", {}, 0},         {"mean+1sd", {}, 0},
+                            {"p99", {}, 0},         {"mean+0.5sd", {}, 0},
+                            {"mean+0.75sd", {}, 0}, {"mean+1sd", {}, 0},
+                            {"mean+1.25sd", {}, 0},
                             {"mean+1.5sd", {}, 0},  {"mean+1.73sd", {}, 0},
                             {"mean+2sd", {}, 0},    {"max of 3x3 min", {}, 0},
                             {"max of 5x5 min", {}, 0}, {"max of 1x3 min", {}, 0},
@@ -117,10 +146,11 @@ int main(int argc, char** argv) {
       for (int v : d) mean += v, sq += double(v) * v;
       mean /= static_cast<double>(d.size());
       const double sd = std::sqrt(std::max(0.0, sq / static_cast<double>(d.size()) - mean * mean));
-      const double d_run = r.at("disparity").get<double>() * 16.0;
-      if (std::abs(d_run - d.back()) > 0.5)
+      if (std::abs(r.at("disparity").get<double>() * 16.0 - d.back()) > 0.5)
         throw std::runtime_error("frame " + std::to_string(f) + ": the run's disparity is not its "
                                  "object's largest: a different build wrote these files");
+      const double d_run =
+          16.0 * deciding_disparity(fs::path(run_dir) / (std::string(prefix) + "objects.csv"));
       const double dist_run = r.at("distance_m").get<double>();
       const double truth_m = t->second.at("distance_m").get<double>();
       const bool in_tunnel = r.at("in_tunnel").get<bool>();
@@ -128,7 +158,9 @@ int main(int argc, char** argv) {
       const double cand[] = {double(d.back()),    mean,
                              quantile(d, 0.50),   quantile(d, 0.75),
                              quantile(d, 0.90),   quantile(d, 0.95),
-                             quantile(d, 0.99),   mean + sd,
+                             quantile(d, 0.99),   mean + 0.5 * sd,
+                             mean + 0.75 * sd,    mean + sd,
+                             mean + 1.25 * sd,
                              mean + 1.5 * sd,     mean + std::sqrt(3.0) * sd,
                              mean + 2 * sd,       eroded_max(3, 3),
                              eroded_max(5, 5),    eroded_max(3, 1),

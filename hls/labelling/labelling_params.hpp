@@ -34,12 +34,14 @@ struct DescWidths {
   int x = 0;     // a column, 0 .. W - 1 (x_min, x_max, closest_x, first_x)
   int y = 0;     // a row, 0 .. H - 1
   int d = 0;     // an object pixel's disparity, 1 .. 0x7fff (positive as int16)
+  int sum_d = 0;   // sum of d over the object (<= W H 0x7fff)
+  int sum_dd = 0;  // sum of d^2 (<= W H 0x7fff^2)
   // m_pq <= S_p(W) S_q(H), S_k(n) = sum_{i < n} i^k; in the order m10 m01 m20 m11 m02 m30 m21
   // m12 m03.
   int m[9] = {};
   /// Every field's bits together: what one descriptor RAM word holds.
   constexpr int total() const {
-    int t = area + 4 * x + 4 * y + 2 * d;
+    int t = area + 4 * x + 4 * y + 2 * d + sum_d + sum_dd;
     for (int w : m) t += w;
     return t;
   }
@@ -71,6 +73,9 @@ constexpr DescWidths desc_widths(int max_width_px, int max_height) {
   w.x = bits_for(static_cast<u128>(max_width_px - 1));
   w.y = bits_for(static_cast<u128>(max_height - 1));
   w.d = 15;
+  const u128 pixels = static_cast<u128>(max_width_px) * max_height;
+  w.sum_d = bits_for(pixels * 0x7fff);
+  w.sum_dd = std::min(64, bits_for(pixels * 0x7fff * 0x7fff));  // Object's 64 bits
   for (int i = 0; i < 9; ++i)
     w.m[i] = std::min(64, bits_for(power_sum(max_width_px, pq[i][0]) *
                                    power_sum(max_height, pq[i][1])));  // Object's 64 bits
@@ -152,6 +157,9 @@ struct Object {
   std::uint16_t first_x = 0, first_y = 0;      // first pixel in raster order
   // Raw moments m_pq = sum u^p v^q, p + q <= 3 (m00 = area).
   std::uint64_t m10 = 0, m01 = 0, m20 = 0, m11 = 0, m02 = 0, m30 = 0, m21 = 0, m12 = 0, m03 = 0;
+  // The disparity's sum and sum of squares (Q11.4 codes): its mean and spread, from which the
+  // warning stage's distance rule reads the object's front face (docs/warning.md).
+  std::uint64_t sum_d = 0, sum_dd = 0;
 
   friend bool operator==(const Object& a, const Object& b) {
     return a.area == b.area && a.x_min == b.x_min && a.x_max == b.x_max && a.y_min == b.y_min &&
@@ -159,7 +167,7 @@ struct Object {
            a.closest_x == b.closest_x && a.closest_y == b.closest_y && a.first_x == b.first_x &&
            a.first_y == b.first_y && a.m10 == b.m10 && a.m01 == b.m01 && a.m20 == b.m20 &&
            a.m11 == b.m11 && a.m02 == b.m02 && a.m30 == b.m30 && a.m21 == b.m21 &&
-           a.m12 == b.m12 && a.m03 == b.m03;
+           a.m12 == b.m12 && a.m03 == b.m03 && a.sum_d == b.sum_d && a.sum_dd == b.sum_dd;
   }
   friend bool operator!=(const Object& a, const Object& b) { return !(a == b); }
 };
@@ -182,6 +190,8 @@ constexpr Object pixel_object(int u, int v, disp_t d) {
   o.m21 = uu * uu * vv;
   o.m12 = uu * vv * vv;
   o.m03 = vv * vv * vv;
+  o.sum_d = d;
+  o.sum_dd = std::uint64_t{d} * d;
   return o;
 }
 
@@ -216,6 +226,8 @@ constexpr Object merge(const Object& a, const Object& b) {
   o.m21 = a.m21 + b.m21;
   o.m12 = a.m12 + b.m12;
   o.m03 = a.m03 + b.m03;
+  o.sum_d = a.sum_d + b.sum_d;
+  o.sum_dd = a.sum_dd + b.sum_dd;
   return o;
 }
 
@@ -239,6 +251,8 @@ constexpr Object narrow(const Object& o, const DescWidths& w) {
   n.d_max = static_cast<std::uint16_t>(cut(o.d_max, w.d));
   std::uint64_t* m[9] = {&n.m10, &n.m01, &n.m20, &n.m11, &n.m02, &n.m30, &n.m21, &n.m12, &n.m03};
   for (int i = 0; i < 9; ++i) *m[i] = cut(*m[i], w.m[i]);
+  n.sum_d = cut(o.sum_d, w.sum_d);
+  n.sum_dd = cut(o.sum_dd, w.sum_dd);
   return n;
 }
 

@@ -24,6 +24,9 @@ void check_config(const WarningConfig& cfg) {
     fail("disparity limit " + std::to_string(cfg.d_limit_q4 / 16.0) + " px outside 1 .. " +
          std::to_string(Params::kMaxDisparityPx) + " px (this build's reciprocal table)");
   if (cfg.high_mm > cfg.medium_mm) fail("the high threshold lies beyond the medium one");
+  if (cfg.rule != DistanceRule::kClosest && cfg.rule != DistanceRule::kSpread)
+    fail("distance rule " + std::to_string(static_cast<int>(cfg.rule)) +
+         " unknown (0 closest, 1 spread)");
 }
 
 /// The stage. One pipeline enable (`in_ready = !out_valid || out_ready`): a word taken at a clock

@@ -19,10 +19,28 @@ struct WarningParams {
   static_assert(MaxDisparityPx >= 2 && MaxDisparityPx <= 2048, "disparity codes fit Q11.4");
 };
 
+/// The distance rule's operand widths (docs/warning.md "The distance rule"): an object's area,
+/// disparity sum and sum of squares are read from their low kRuleAreaBits, kRuleSumBits and
+/// kRuleSquareBits bits. A labelling build of up to 2^20 - 1 pixels (1280 x 720 and below) never
+/// has more: area < 2^20 and d < 2^15 bound the sums (sim/ checks each pipeline build).
+inline constexpr int kRuleAreaBits = 20;
+inline constexpr int kRuleSumBits = kRuleAreaBits + 15;
+inline constexpr int kRuleSquareBits = kRuleAreaBits + 30;
+/// The spread's root: A S2 - S1^2 < 2^70, so its rounded root has at most 36 bits.
+inline constexpr int kRuleRootBits = kRuleSumBits;
+/// Clocks the rule adds in front of the object pipeline (scw_warning_rule's Latency).
+inline constexpr int kRuleLatency = 64;  // set from the RTL
 /// Clocks from an input word's acceptance to its effect on the frame result (the RTL's
-/// pipeline depth, `Latency` in scw_warning): table read, b/d, coordinates, squares, square root,
-/// tunnel test, severity, fold. Shared by the model, the RTL and sim/.
-inline constexpr int kLatency = 47;
+/// pipeline depth, `Latency` in scw_warning): the distance rule, then table read, b/d,
+/// coordinates, squares, square root, tunnel test, severity, fold. Shared by the model, the RTL
+/// and sim/.
+inline constexpr int kLatency = kRuleLatency + 47;
+
+/// Which disparity places an object.
+enum class DistanceRule : std::uint8_t {
+  kClosest = 0,  // the thesis's: its largest disparity, d_max (architecture 4.3)
+  kSpread = 1,   // its front face: min(d_max, mean + k sd) of its disparities
+};
 
 /// Run-time configuration (the RTL's cfg_* ports), stable while frames stream. Lengths in mm.
 /// host/warning/setup.hpp fills it from metres and pixels (to_fixed) and documents the defaults.
@@ -44,6 +62,8 @@ struct WarningConfig {
                                        //   D < medium, else low
   std::uint16_t min_height_mm = 0;     // objects lower than this (3D, eq. 3.12) are not obstacles
   std::uint16_t d_limit_q4 = 0;        // d_max >= this: closer than the search range measures
+  DistanceRule rule = DistanceRule::kClosest;  // which disparity places an object
+  std::uint8_t spread_q4 = 0;          // k of kSpread, Q4.4 (0 .. 15.9375)
 };
 
 enum class Severity : std::uint8_t { kNone = 0, kLow = 1, kMedium = 2, kHigh = 3 };
@@ -82,9 +102,46 @@ constexpr std::uint32_t isqrt_round(std::uint64_t n) {
   return static_cast<std::uint32_t>(r);
 }
 
+/// floor(sqrt(n) + 1/2) for n < 2^(2 root_bits), trying root bits root_bits - 1 .. 0 (the RTL's
+/// bit-serial square root, scw_warning_sqrt, with RootW = root_bits).
+constexpr std::uint64_t isqrt_round_wide(labelling::u128 n, int root_bits) {
+  std::uint64_t r = 0;
+  for (int b = root_bits - 1; b >= 0; --b) {
+    const std::uint64_t t = r | (std::uint64_t{1} << b);
+    if (static_cast<labelling::u128>(t) * t <= n) r = t;
+  }
+  if (n - static_cast<labelling::u128>(r) * r > r) ++r;
+  return r;
+}
+
+/// The disparity (Q11.4 code) that places object `o` under `c.rule`. kSpread, exactly as
+/// scw_warning_rule computes it from area A, S1 = sum d and S2 = sum d^2 (cut to the rule's
+/// widths):
+///   V = max(0, A S2 - S1^2)          (A^2 times the variance; never negative from a real object)
+///   R = isqrt_round(V)                (A sd)
+///   q = floor((16 S1 + k_q4 R + 8 A) / (16 A))   (mean + k sd, rounded; 65535 when it does not
+///                                                 fit 16 bits, A = 0 included)
+///   d = min(d_max, q)                 (never nearer than the object's closest pixel)
+constexpr std::uint32_t rule_disparity(const labelling::Object& o, const WarningConfig& c) {
+  if (c.rule != DistanceRule::kSpread) return o.d_max;
+  using u128 = labelling::u128;
+  auto low = [](std::uint64_t v, int bits) { return v & ((std::uint64_t{1} << bits) - 1); };
+  const u128 a = low(o.area, kRuleAreaBits);
+  const u128 s1 = low(o.sum_d, kRuleSumBits);
+  const u128 s2 = low(o.sum_dd, kRuleSquareBits);
+  const u128 as2 = a * s2, s1s1 = s1 * s1;
+  const u128 v = as2 > s1s1 ? as2 - s1s1 : 0;
+  const u128 r = isqrt_round_wide(v, kRuleRootBits);
+  const u128 num = 16 * s1 + u128{c.spread_q4} * r + 8 * a;
+  const u128 den = 16 * a;
+  const u128 q = (den == 0 || num / den > 0xffff) ? 0xffff : num / den;
+  return static_cast<std::uint32_t>(q < o.d_max ? q : u128{o.d_max});
+}
+
 /// One object as the warning stage sees it. Lengths in mm, camera coordinates unless named v_.
 struct ObjectEval {
-  bool measurable = false;  // d_max >= 1 px; otherwise too far to place and never an obstacle
+  std::uint32_t d_q4 = 0;   // the disparity that places it (rule_disparity), Q11.4
+  bool measurable = false;  // d_q4 >= 1 px; otherwise too far to place and never an obstacle
   bool too_close = false;   // d_max >= d_limit: at most `distance_mm` away (an upper bound)
   std::int64_t s_q20 = 0;   // b / d: mm per pixel at the object's depth, Q.20
   std::int32_t x_mm = 0, y_mm = 0, z_mm = 0;  // closest point, eq. 2.18
@@ -100,15 +157,17 @@ struct ObjectEval {
 
 /// The per-object arithmetic of the stage, exactly as the RTL pipeline computes it.
 /// Pixel edges: a bounding box [x_min, x_max] spans x_min - 1/2 .. x_max + 1/2 (so W and H count
-/// pixels, never 0); all coordinates of an object use its closest disparity d_max. Codes past the
-/// table read its last entry; check_config keeps d_limit inside the table, so they are too close.
+/// pixels, never 0); all coordinates of an object use the rule's disparity d (d_max under the
+/// thesis's rule). Codes past the table read its last entry; check_config keeps d_limit inside
+/// the table, so they are too close.
 template <typename Params>
 constexpr ObjectEval evaluate(const labelling::Object& o, const WarningConfig& c) {
   ObjectEval e;
-  const std::uint32_t dq = o.d_max;
+  const std::uint32_t dq = rule_disparity(o, c);
+  e.d_q4 = dq;
   e.measurable = dq >= 16 && dq < 0x8000u;
   if (!e.measurable) return e;
-  e.too_close = dq >= c.d_limit_q4;
+  e.too_close = o.d_max >= c.d_limit_q4;
   const std::uint32_t index = dq < Params::kTableSize ? dq : Params::kTableSize - 1;
   // S = b / d = b_q8 * 2^-8 * 16 / dq mm/px = b_q8 * recip * 2^-36; kept Q.20.
   e.s_q20 = rshift_round(static_cast<std::int64_t>(c.baseline_q8) * recip(index), 16);

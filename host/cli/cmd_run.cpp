@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -145,14 +146,16 @@ Rectification set_up_camera(Options& o, cv::Size size) {
 /// Each object with the warning stage's view of it and the application layer's.
 void write_objects_csv(const fs::path& p, const app::FrameOutput& f) {
   std::ofstream csv(p);
-  csv << "label,area,u0,v0,u1,v1,closest_u,closest_v,disparity,x_m,y_m,z_m,width_m,height_m,"
+  // disparity: what placed the object (the distance rule's); d_max: its largest.
+  csv << "label,area,u0,v0,u1,v1,closest_u,closest_v,disparity,d_max,x_m,y_m,z_m,width_m,height_m,"
          "distance_m,gap_m,in_tunnel,obstacle,too_close,severity,hu1,hu2,hu3,class,track,"
          "deciding\n";
   for (const auto& r : f.objects) {
     const auto& o = r.object;
     const auto& e = r.eval;
     csv << r.label << ',' << o.area << ',' << o.x_min << ',' << o.y_min << ',' << o.x_max << ','
-        << o.y_max << ',' << o.closest_x << ',' << o.closest_y << ',' << o.d_max / 16.0 << ','
+        << o.y_max << ',' << o.closest_x << ',' << o.closest_y << ',' << e.d_q4 / 16.0 << ','
+        << o.d_max / 16.0 << ','
         << e.x_mm / 1000.0 << ',' << e.y_mm / 1000.0 << ',' << e.z_mm / 1000.0 << ','
         << e.width_mm / 1000.0 << ',' << e.height_mm / 1000.0 << ',' << e.distance_mm / 1000.0
         << ',' << e.gap_mm / 1000.0 << ',' << e.in_tunnel << ',' << e.obstacle << ','
@@ -297,6 +300,18 @@ void add_run_command(CLI::App& app) {
                   "Camera height above the road, m (the road stage's first road, ground removal's slope)")->capture_default_str();
   cmd->add_option("--min-height", o->run.warning.min_height_m,
                   "Lower objects are not obstacles (road markings), m")->capture_default_str();
+  cmd->add_option("--distance-rule", o->run.warning.distance_rule,
+                  "Which disparity places an object: spread, min(d_max, mean + k sd) of its "
+                  "disparities (default), or closest, its largest (the thesis's)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, hls::warning::DistanceRule>{
+              {"closest", hls::warning::DistanceRule::kClosest},
+              {"spread", hls::warning::DistanceRule::kSpread}},
+          CLI::ignore_case));
+  cmd->add_option("--spread-k", o->run.warning.spread_k,
+                  "k of the spread rule, 0 .. 15.9375 (steps of 1/16)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 15.9375));
   cmd->add_option("--near", o->run.warning.near_m,
                   "Outside the tunnel: medium when this close to it, m")->capture_default_str();
   cmd->add_option("--car-width", o->run.warning.car_width_m, "Car width, m (tunnel: 1.5x)")->capture_default_str();

@@ -23,6 +23,7 @@
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
 #include "host/synth/builds.hpp"
+#include "host/warning/reference.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "sim/pipeline_chain.hpp"
 #if SCW_THESIS_RTL
@@ -253,11 +254,15 @@ int run(const Options& o, int width, int height, int dmin_default, int num_disp_
             : got.index == 0xffff;
     const bool agree = static_cast<int>(got.severity) == static_cast<int>(ref.result.severity) &&
                        got.objects == ref.result.objects && same_object &&
-                       (!any || std::abs(got.distance_mm / 1000.0 - ref_d) < 0.01);
+                       (!any || std::abs(got.distance_mm / 1000.0 - ref_d) <
+                                    host::warning::distance_tolerance_m(
+                                        ref.result.deciding,
+                                        host::pipeline::warning_setup(l.cols, l.rows, so)));
     std::cout << "floating-point chain: " << app::severity_name(ref.result.severity) << ", "
               << ref.result.objects << " objects"
               << (any ? ", deciding object at " + std::to_string(ref_d) + " m" : std::string())
-              << (agree ? ": agrees with the pipeline's last result (distance within 1 cm)\n"
+              << (agree ? ": agrees with the pipeline's last result (distance within 1 cm and "
+                          "one code)\n"
                         : ": DIFFERS from the pipeline's last result\n");
     ref_json = {{"severity", app::severity_name(ref.result.severity)},
                 {"objects", ref.result.objects},

@@ -400,7 +400,7 @@ cv::Mat stacked(const std::vector<cv::Mat>& frames) {
 }
 
 nlohmann::json word_layout() {
-  // The generic {last, data} description, plus the two shapes the 769-bit data takes
+  // The generic {last, data} description, plus the two shapes the 897-bit data takes
   // (sim/labelling_pack.hpp): bit 0 tells them apart.
   nlohmann::json l = vectors::stream_beat_layout(Layout::kPayloadBits);
   nlohmann::json obj = nlohmann::json::array();
@@ -412,7 +412,8 @@ nlohmann::json word_layout() {
     obj.push_back({{"name", n}, {"lsb", at}, {"bits", 16}});
     at += 16;
   }
-  for (const char* n : {"m10", "m01", "m20", "m11", "m02", "m30", "m21", "m12", "m03"}) {
+  for (const char* n :
+       {"m10", "m01", "m20", "m11", "m02", "m30", "m21", "m12", "m03", "sum_d", "sum_dd"}) {
     obj.push_back({{"name", n}, {"lsb", at}, {"bits", 64}});
     at += 64;
   }
@@ -491,7 +492,8 @@ void run(const Options& o, const Preset& p) {
       for (std::uint16_t v : {b.x_min, b.x_max, b.y_min, b.y_max, b.d_min, b.d_max, b.closest_x,
                               b.closest_y, b.first_x, b.first_y})
         r.push_back(std::to_string(v));
-      for (std::uint64_t v : {b.m10, b.m01, b.m20, b.m11, b.m02, b.m30, b.m21, b.m12, b.m03})
+      for (std::uint64_t v :
+           {b.m10, b.m01, b.m20, b.m11, b.m02, b.m30, b.m21, b.m12, b.m03, b.sum_d, b.sum_dd})
         r.push_back(std::to_string(v));
       obj_rows.push_back(std::move(r));
     }
@@ -508,11 +510,12 @@ void run(const Options& o, const Preset& p) {
   vw.add_hex("in.hex", "input", in_words, vectors::pixel_beat_layout(1, 16));
   vw.add_image("in.png", "input", stacked(images));
   vw.add_hex("expected.hex", "expected", out_words, word_layout());
-  vw.add_csv("expected_objects.csv", "expected",
-             {"frame", "word",  "label",     "area",      "x_min",   "x_max",   "y_min", "y_max",
-              "d_min", "d_max", "closest_x", "closest_y", "first_x", "first_y", "m10",   "m01",
-              "m20",   "m11",   "m02",       "m30",       "m21",     "m12",     "m03"},
-             obj_rows);
+  vw.add_csv(
+      "expected_objects.csv", "expected",
+      {"frame", "word",      "label",     "area",    "x_min",   "x_max", "y_min", "y_max", "d_min",
+       "d_max", "closest_x", "closest_y", "first_x", "first_y", "m10",   "m01",   "m20",   "m11",
+       "m02",   "m30",       "m21",       "m12",     "m03",     "sum_d", "sum_dd"},
+      obj_rows);
   vw.add_csv("expected_status.csv", "expected",
              {"frame", "word", "objects", "tile_overflow", "object_overflow", "stream_error"},
              status_rows);

@@ -95,19 +95,21 @@ Frame expect(std::string name, std::vector<Object> t, Severity sev, bool tunnel,
   return f;
 }
 
-/// An object with closest point (u, v), disparity code dq and the given bounding box.
+/// An object with closest point (u, v), disparity code dq at every pixel and the given bounding
+/// box.
 Object make_object(int u, int v, int dq, int x_min, int y_min, int x_max, int y_max) {
   Object o;
   o.closest_x = static_cast<std::uint16_t>(u);
   o.closest_y = static_cast<std::uint16_t>(v);
   o.first_x = o.closest_x;
   o.first_y = o.closest_y;
-  o.d_max = o.d_min = static_cast<std::uint16_t>(dq);
+  o.d_min = static_cast<std::uint16_t>(dq);
   o.x_min = static_cast<std::uint16_t>(x_min);
   o.x_max = static_cast<std::uint16_t>(x_max);
   o.y_min = static_cast<std::uint16_t>(y_min);
   o.y_max = static_cast<std::uint16_t>(y_max);
   o.area = 1u + static_cast<std::uint32_t>((x_max - x_min) * (y_max - y_min));
+  fixtures::set_uniform_code(o, o.d_min);
   return o;
 }
 
@@ -136,16 +138,17 @@ Preset thesis() {
   const Object marking = fixtures::place_box(s, lane, 5.0, 1.0, 0.05);
   // Too far to place: d_max below 1 px.
   Object far = fixtures::place_box(s, lane, 20.0, 1.6, 1.4);
-  far.d_max = far.d_min = 12;
+  far.d_min = 12;
+  fixtures::set_uniform_code(far, 12);
   // Too close: d_max at or past d_limit (64 px = code 1024), judged as at the bumper. One inside
   // the table, one past its end (code 2048 = 128 px reads the last entry).
   Object close_in = fixtures::place_box(s, lane, 5.0, 1.6, 1.4);
-  close_in.d_max = 1100;
+  fixtures::set_uniform_code(close_in, 1100);
   Object close_past = close_in;
-  close_past.d_max = 2100;
+  fixtures::set_uniform_code(close_past, 2100);
   // Well right of the tunnel (over 2 m beside it, beyond near_m): too close but low.
   Object close_side = fixtures::place_box(s, lane + 4.0, 5.0, 1.0, 1.4);
-  close_side.d_max = 1100;
+  fixtures::set_uniform_code(close_side, 1100);
 
   using S = Severity;
   p.frames = {
@@ -210,7 +213,8 @@ Preset random_preset() {
       std::to_string(kRandomSeed) +
       ", 1344x391 image, f 700 px, b 0.54 m, principal point 672,195.5, d_limit 127 px) back to "
       "back: boxes 2..40 m ahead, 6 m either side, 0.1..2.5 m in size, 1 in 10 unmeasurable, 1 "
-      "in 10 too close (some past the 128 px table), 1 in 10 an exact copy of an earlier one; "
+      "in 10 too close (some past the 128 px table), 1 in 10 an exact copy of an earlier one, the "
+      "others each with 1..12 random disparities up to its d_max (area, sum_d, sum_dd); "
       "tile_overflow and object_overflow each set on about 1 frame in 10";
   return p;
 }
@@ -365,7 +369,8 @@ nlohmann::json in_layout() {
     obj.push_back({{"name", n}, {"lsb", at}, {"bits", 16}});
     at += 16;
   }
-  for (const char* n : {"m10", "m01", "m20", "m11", "m02", "m30", "m21", "m12", "m03"}) {
+  for (const char* n : {"m10", "m01", "m20", "m11", "m02", "m30", "m21", "m12", "m03", "sum_d",
+                        "sum_dd"}) {
     obj.push_back({{"name", n}, {"lsb", at}, {"bits", 64}});
     at += 64;
   }
@@ -433,6 +438,7 @@ void run(const Options& o, const Preset& p) {
             << " cycles)\n";
 
   const WarningSetup& s = p.setup;
+  const bool spread = s.distance_rule == hls::warning::DistanceRule::kSpread;
   const nlohmann::json setup = {{"focal_px", s.focal_px},
                                 {"baseline_m", s.baseline_m},
                                 {"cu_px", s.cu_px},
@@ -447,7 +453,9 @@ void run(const Options& o, const Preset& p) {
                                 {"medium_m", s.medium_m},
                                 {"near_m", s.near_m},
                                 {"min_height_m", s.min_height_m},
-                                {"d_limit_px", s.d_limit_px}};
+                                {"d_limit_px", s.d_limit_px},
+                                {"distance_rule", spread ? "spread" : "closest"},
+                                {"spread_k", s.spread_k}};
   // The stage's cfg_*_i ports, named after them without cfg_ and _i.
   const nlohmann::json ports = {{"baseline_q8", cfg.baseline_q8},
                                 {"focal_q4", cfg.focal_q4},
@@ -462,7 +470,9 @@ void run(const Options& o, const Preset& p) {
                                 {"medium_mm", cfg.medium_mm},
                                 {"near_mm", cfg.near_mm},
                                 {"min_height_mm", cfg.min_height_mm},
-                                {"d_limit_q4", cfg.d_limit_q4}};
+                                {"d_limit_q4", cfg.d_limit_q4},
+                                {"rule", static_cast<int>(cfg.rule)},
+                                {"spread_q4", cfg.spread_q4}};
   const nlohmann::json config = {{"max_disparity_px", kMaxDisparityPx},
                                  {"table_size", VecParams::kTableSize},
                                  {"latency", hls::warning::kLatency},
@@ -491,15 +501,17 @@ void run(const Options& o, const Preset& p) {
       auto v = [&](unsigned x) { return st ? std::string("0") : std::to_string(x); };
       word_rows.push_back({std::to_string(fi), std::to_string(line), b01(w[k].last), b01(st),
                            v(ob.x_min), v(ob.x_max), v(ob.y_min), v(ob.y_max), v(ob.d_max),
-                           v(ob.closest_x), v(ob.closest_y),
+                           v(ob.closest_x), v(ob.closest_y), v(ob.area),
+                           st ? std::string("0") : std::to_string(ob.sum_d),
+                           st ? std::string("0") : std::to_string(ob.sum_dd),
                            st ? std::to_string(d.status.objects) : "0",
                            b01(st && d.status.tile_overflow), b01(st && d.status.object_overflow),
                            b01(st && d.status.stream_error)});
       if (st) continue;
       const ObjectEval e = hls::warning::evaluate<VecParams>(ob, cfg);
       eval_rows.push_back({std::to_string(fi), std::to_string(line), std::to_string(k),
-                           b01(e.measurable), b01(e.too_close), std::to_string(e.x_mm),
-                           std::to_string(e.y_mm), std::to_string(e.z_mm),
+                           std::to_string(e.d_q4), b01(e.measurable), b01(e.too_close),
+                           std::to_string(e.x_mm), std::to_string(e.y_mm), std::to_string(e.z_mm),
                            std::to_string(e.width_mm), std::to_string(e.height_mm),
                            std::to_string(e.distance_mm), std::to_string(e.gap_mm),
                            b01(e.in_tunnel), b01(e.obstacle), severity_name(e.severity)});
@@ -518,8 +530,8 @@ void run(const Options& o, const Preset& p) {
   vw.add_hex("in.hex", "input", in_bits, in_layout());
   vw.add_csv("in_words.csv", "input",
              {"frame", "word", "last", "is_status", "x_min", "x_max", "y_min", "y_max", "d_max",
-              "closest_x", "closest_y", "objects", "tile_overflow", "object_overflow",
-              "stream_error"},
+              "closest_x", "closest_y", "area", "sum_d", "sum_dd", "objects", "tile_overflow",
+              "object_overflow", "stream_error"},
              word_rows);
   vw.add_hex("expected.hex", "expected", out_bits, out_layout());
   vw.add_csv("expected.csv", "expected",
@@ -528,7 +540,7 @@ void run(const Options& o, const Preset& p) {
               "closest_x", "closest_y", "d_max", "x_min", "x_max", "y_min", "y_max"},
              result_rows);
   vw.add_csv("expected_objects.csv", "expected",
-             {"frame", "word", "index", "measurable", "too_close", "x_mm", "y_mm", "z_mm",
+             {"frame", "word", "index", "d_q4", "measurable", "too_close", "x_mm", "y_mm", "z_mm",
               "width_mm", "height_mm", "distance_mm", "gap_mm", "in_tunnel", "obstacle",
               "severity"},
              eval_rows);

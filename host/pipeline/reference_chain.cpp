@@ -42,9 +42,9 @@ ReferenceFrame reference_frame(const cv::Mat& left, const cv::Mat& right, int wi
     f.road = reference::to_px(rcfg.nominal);
     const cv::Mat map = f.disparity.clone();
     for (int k = 0; k < frames; ++k) {
-      const auto r = reference::road_reference(map, f.road, rcfg);
-      f.disparity = r.kept;
-      if (k + 1 < frames) f.road = r.next;
+      const auto step = reference::road_reference(map, f.road, rcfg);
+      f.disparity = step.kept;
+      if (k + 1 < frames) f.road = step.next;
     }
     std::memcpy(d.data(), f.disparity.data, d.size() * sizeof(std::uint16_t));
   }

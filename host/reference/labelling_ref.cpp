@@ -46,6 +46,8 @@ Object describe(std::vector<std::size_t>& pixels, const disp_t* disp, int width)
     o.m21 += u * u * v;
     o.m12 += u * v * v;
     o.m03 += v * v * v;
+    o.sum_d += disp[i];
+    o.sum_dd += std::uint64_t{disp[i]} * disp[i];
   }
   // Raster order: the first pixel found holding d_max is the closest point.
   for (const std::size_t i : pixels)

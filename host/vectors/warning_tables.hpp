@@ -40,8 +40,31 @@ inline host::warning::WarningSetup thesis_setup() {
   return s;
 }
 
+/// Sets d_max to `dq` and the disparity sums to those of `area` pixels all at `dq` (sum_d =
+/// A dq, sum_dd = A dq^2): under either distance rule such an object is placed at dq.
+inline void set_uniform_code(Object& o, std::uint16_t dq) {
+  o.d_max = dq;
+  o.sum_d = std::uint64_t{o.area} * dq;
+  o.sum_dd = std::uint64_t{o.area} * dq * dq;
+}
+
+/// Gives `o` a small random multiset of disparities whose largest is its d_max: 1 .. 12 pixels
+/// (the area), the others spread up to an eighth of d_max below it; sum_d and sum_dd are theirs.
+inline void set_random_sums(std::mt19937& rng, Object& o) {
+  const std::uint32_t n = 1 + rng() % 12;
+  const std::uint32_t spread = 1 + o.d_max / 8;
+  o.area = n;
+  o.sum_d = o.d_max;
+  o.sum_dd = std::uint64_t{o.d_max} * o.d_max;
+  for (std::uint32_t i = 1; i < n; ++i) {
+    const std::uint64_t d = o.d_max - std::min<std::uint32_t>(o.d_max, rng() % spread);
+    o.sum_d += d;
+    o.sum_dd += d * d;
+  }
+}
+
 /// An upright box standing on the road (camera coordinates, metres: lateral centre x, depth z,
-/// size w x h) as the labelling stage would describe it.
+/// size w x h) as the labelling stage would describe it: every pixel at the box's disparity.
 inline Object place_box(const host::warning::WarningSetup& s, double x, double z, double w,
                         double h) {
   const double d = s.baseline_m * s.focal_px / z;  // px
@@ -53,16 +76,17 @@ inline Object place_box(const host::warning::WarningSetup& s, double x, double z
   o.x_max = static_cast<std::uint16_t>(std::lround(u(x + w / 2)));
   o.y_min = static_cast<std::uint16_t>(std::lround(v(y_ground + h)));
   o.y_max = static_cast<std::uint16_t>(std::lround(v(y_ground)));
-  o.d_max = static_cast<std::uint16_t>(std::lround(16 * d));
-  o.d_min = o.d_max;
+  o.d_min = static_cast<std::uint16_t>(std::lround(16 * d));
   o.closest_x = static_cast<std::uint16_t>((o.x_min + o.x_max) / 2);
   o.closest_y = o.y_max;
   o.area = 1u + (o.x_max - o.x_min) * (o.y_max - o.y_min);
+  set_uniform_code(o, o.d_min);
   return o;
 }
 
 /// Random tables over the whole range of the stage: objects too far to measure, too close,
-/// too low, in and beside the tunnel at every distance, with frequent exact ties.
+/// too low, in and beside the tunnel at every distance, with frequent exact ties. Each object
+/// but the ties has a small random multiset of disparities up to its d_max (set_random_sums).
 inline std::vector<Object> random_table(std::mt19937& rng, const host::warning::WarningSetup& s,
                                         int n, int width, int height) {
   std::uniform_int_distribution<int> kind(0, 9);
@@ -70,12 +94,19 @@ inline std::vector<Object> random_table(std::mt19937& rng, const host::warning::
   std::vector<Object> t;
   for (int i = 0; i < n; ++i) {
     Object o = place_box(s, lateral(rng), depth(rng), size(rng), size(rng));
+    bool copy = false;
     switch (kind(rng)) {
       case 0: o.d_max = static_cast<std::uint16_t>(rng() % 16); break;  // not measurable
       case 1: o.d_max = static_cast<std::uint16_t>(16 * s.d_limit_px + rng() % 64); break;
-      case 2: if (!t.empty()) o = t[rng() % t.size()]; break;  // an exact tie
+      case 2:  // an exact tie
+        if (!t.empty()) {
+          o = t[rng() % t.size()];
+          copy = true;
+        }
+        break;
       default: break;
     }
+    if (!copy) set_random_sums(rng, o);
     o.x_min = std::min<std::uint16_t>(o.x_min, static_cast<std::uint16_t>(width - 1));
     o.x_max = std::clamp<std::uint16_t>(o.x_max, o.x_min, static_cast<std::uint16_t>(width - 1));
     o.y_min = std::min<std::uint16_t>(o.y_min, static_cast<std::uint16_t>(height - 1));

@@ -3,6 +3,7 @@
 #include "host/warning/reference.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -20,15 +21,31 @@ Eigen::Vector3d triangulate(double u, double v, double d, const WarningSetup& s)
 
 }  // namespace
 
+double rule_disparity_px(const hls::labelling::Object& o, const WarningSetup& s) {
+  const double d_max = static_cast<std::int16_t>(o.d_max) / 16.0;
+  if (s.distance_rule != hls::warning::DistanceRule::kSpread) return d_max;
+  if (o.area == 0) return d_max;
+  const double n = o.area;
+  const double mean = static_cast<double>(o.sum_d) / n / 16.0;
+  const double var = static_cast<double>(o.sum_dd) / n / 256.0 - mean * mean;
+  return std::min(d_max, mean + s.spread_k * std::sqrt(std::max(0.0, var)));
+}
+
+double distance_tolerance_m(const RefEval& e, const WarningSetup& s) {
+  const bool spread = s.distance_rule == hls::warning::DistanceRule::kSpread;
+  return 0.01 + (spread && e.disparity_px > 0 ? e.camera_distance_m / (16 * e.disparity_px) : 0);
+}
+
 RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s) {
   RefEval r;
   // The disparity word is a signed Q11.4 number: codes with the top bit set are negative
   // (invalid), and below 1 px the object is too far to place.
-  const double d = static_cast<std::int16_t>(o.d_max) / 16.0;
+  const double d_max = static_cast<std::int16_t>(o.d_max) / 16.0;
+  const double d = rule_disparity_px(o, s);
   r.disparity_px = d;
   r.measurable = d >= 1.0;
   if (!r.measurable) return r;
-  r.too_close = d >= s.d_limit_px;
+  r.too_close = d_max >= s.d_limit_px;
 
   r.closest = triangulate(o.closest_x, o.closest_y, d, s);
   // Every pixel covers [u - 1/2, u + 1/2], so the box reaches half a pixel past its outer

@@ -15,9 +15,9 @@ namespace scw::host::warning {
 /// One object as the reference sees it. Lengths in metres, camera coordinates (x right, y up,
 /// z ahead) unless said otherwise.
 struct RefEval {
-  bool measurable = false;    // d_max (as a signed Q11.4 number) is at least 1 px
+  bool measurable = false;    // the rule's disparity d is at least 1 px
   bool too_close = false;     // d_max >= the setup's d_limit_px
-  double disparity_px = 0.0;  // d = d_max / 16
+  double disparity_px = 0.0;  // d: rule_disparity_px, every coordinate's depth
   Eigen::Vector3d closest = Eigen::Vector3d::Zero();  // A, eq. 2.18 at the closest pixel
   /// Bounding-box corners C_LU and C_RB at A's depth, through the pixel edges
   /// (x_min - 1/2, y_min - 1/2) and (x_max + 1/2, y_max + 1/2).
@@ -54,9 +54,18 @@ struct RefFrame {
 hls::warning::Severity judge_severity(bool in_tunnel, double gap_m, double distance_m,
                                       const WarningSetup& s);
 
+/// The disparity (px) that places `o` under the setup's rule: d_max / 16 (kClosest), or
+/// min(d_max, mean + spread_k sd) of its disparities from its area, sum and sum of squares
+/// (kSpread; d_max when the area is 0).
+double rule_disparity_px(const hls::labelling::Object& o, const WarningSetup& s);
+
 /// Evaluates one labelling object in double precision: no integer arithmetic, thresholds taken
 /// from `s` in metres as given (not rounded to the stage's millimetres).
 RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s);
+
+/// How far the stage's distance may lie from the reference's for object `e`: 1 cm of fixed-point
+/// arithmetic, and under the spread rule one Q11.4 code of the rule's rounding (|A| / (16 d)).
+double distance_tolerance_m(const RefEval& e, const WarningSetup& s);
 
 /// Evaluates a frame's object table and picks the deciding obstacle.
 RefFrame fold_ref(const std::vector<hls::labelling::Object>& objects, const WarningSetup& s);

@@ -41,6 +41,8 @@ hls::warning::WarningConfig to_fixed(const WarningSetup& s) {
   c.min_height_mm = mm(s.min_height_m, "minimum height");
   c.d_limit_q4 = static_cast<std::uint16_t>(
       to_int(s.d_limit_px, 16, 16, 32767, "disparity limit", "px"));
+  c.rule = s.distance_rule;
+  c.spread_q4 = static_cast<std::uint8_t>(to_int(s.spread_k, 16, 0, 255, "spread k", "sd"));
   return c;
 }
 

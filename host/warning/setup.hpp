@@ -27,6 +27,11 @@ struct WarningSetup {
   double min_height_m = 0.5;   // lower objects (road markings) are not obstacles
   double d_limit_px = 64.0;    // the top of the disparity search range: objects reaching it are
                                // closer than the pipeline measures
+  /// Which disparity places an object (docs/warning.md "The distance rule"): the thesis's
+  /// largest (kClosest) or min(d_max, mean + spread_k sd) of the object's disparities (kSpread,
+  /// the default: k chosen on cyclist-crossing and pedestrian-running, docs/scene.md).
+  hls::warning::DistanceRule distance_rule = hls::warning::DistanceRule::kSpread;
+  double spread_k = 0.75;      // k, 0 .. 15.9375 in steps of 1/16
 
   double tunnel_half_width_m() const { return 0.5 * tunnel_scale * car_width_m; }
   double tunnel_height_m() const { return tunnel_scale * car_height_m; }

@@ -89,8 +89,8 @@ module scw_labelling #(
   // sim::labelling_params_match): an object is a set of the frame's pixels and every term is
   // non-negative, so a field is at most its value for the whole W x H frame: area <= W H, a
   // column <= W - 1, a row <= H - 1, a disparity <= 0x7fff, m_pq <= S_p(W) S_q(H) with
-  // S_k(n) = sum_{i < n} i^k (1280 x 480: 20, 11, 9, 15 and m10 .. m03 29 28 39 37 36 49 47 45 44
-  // bits, 484 in all).
+  // S_k(n) = sum_{i < n} i^k, sum_d <= W H 0x7fff and sum_dd <= W H 0x7fff^2 (1280 x 480: 20,
+  // 11, 9, 15, m10 .. m03 29 28 39 37 36 49 47 45 44, sum_d 35 and sum_dd 50 bits, 569 in all).
   localparam logic [127:0] Wd = 128'(MaxWidthPx);
   localparam logic [127:0] Hd = 128'(MaxHeight);
   localparam logic [127:0] Sx1 = Wd * (Wd - 1) / 2;
@@ -122,9 +122,14 @@ module scw_labelling #(
       (Sx1 * Sy2 == 0) ? 1 : ($clog2(Sx1 * Sy2 + 1) > 64 ? 64 : $clog2(Sx1 * Sy2 + 1));
   localparam int unsigned M03W /*verilator public*/ =
       (Wd * Sy3 == 0) ? 1 : ($clog2(Wd * Sy3 + 1) > 64 ? 64 : $clog2(Wd * Sy3 + 1));
+  // sum_d <= W H 0x7fff, sum_dd <= W H 0x7fff^2 (1280 x 480: 35 and 50 bits)
+  localparam logic [127:0] DMax = 128'h7fff;
+  localparam int unsigned SumDW /*verilator public*/ = $clog2(Wd * Hd * DMax + 1);
+  localparam int unsigned SumDDW /*verilator public*/ =
+      $clog2(Wd * Hd * DMax * DMax + 1) > 64 ? 64 : $clog2(Wd * Hd * DMax * DMax + 1);
   localparam int unsigned DescW /*verilator public*/ =
       AreaW + 4 * PosXW + 4 * PosYW + 2 * DispW + M10W + M01W + M20W + M11W + M02W + M30W +
-      M21W + M12W + M03W;
+      M21W + M12W + M03W + SumDW + SumDDW;
   localparam int unsigned XW     = $clog2(MaxWidthPx);       // 0 .. MaxWidthPx - 1
   localparam int unsigned YW     = $clog2(MaxHeight + 1);    // 0 .. MaxHeight
   localparam int unsigned HW     = (MaxHeight > 1) ? $clog2(MaxHeight) : 1;  // a border row
@@ -460,7 +465,9 @@ module scw_labelling #(
       .M30W         (M30W),
       .M21W         (M21W),
       .M12W         (M12W),
-      .M03W         (M03W)
+      .M03W         (M03W),
+      .SumDW        (SumDW),
+      .SumDDW       (SumDDW)
     ) u_lane (
       .clk_i,
       .rst_ni,
@@ -809,7 +816,9 @@ module scw_labelling #(
     .M30W (M30W),
     .M21W (M21W),
     .M12W (M12W),
-    .M03W (M03W)
+    .M03W (M03W),
+    .SumDW (SumDW),
+    .SumDDW(SumDDW)
   ) u_merge (
     .clk_i,
     .en_i(r4_valid_q),  // R5's sum
@@ -999,7 +1008,9 @@ module scw_labelling #(
     out_desc.m30       = 64'(acc_rd[at +: M30W]);   at = at + M30W;
     out_desc.m21       = 64'(acc_rd[at +: M21W]);   at = at + M21W;
     out_desc.m12       = 64'(acc_rd[at +: M12W]);   at = at + M12W;
-    out_desc.m03       = 64'(acc_rd[at +: M03W]);
+    out_desc.m03       = 64'(acc_rd[at +: M03W]);   at = at + M03W;
+    out_desc.sum_d     = 64'(acc_rd[at +: SumDW]);  at = at + SumDW;
+    out_desc.sum_dd    = 64'(acc_rd[at +: SumDDW]);
   end
 
   // The output register: an object's sum, or the status word (sim/labelling_pack.hpp).

@@ -3,7 +3,7 @@
 `default_nettype none
 
 // Words are descriptors in scw_labelling_merge's layout, DescW bits (hls::labelling::DescWidths:
-// a 1280 x 480 descriptor takes 484 bits). A scw_ram_sdp underneath: registered read, read-first.
+// a 1280 x 480 descriptor takes 569 bits). A scw_ram_sdp underneath: registered read, read-first.
 // With OutReg = 1 a second register (the block RAM's output register) follows, so rd_data_o is
 // the word read two clocks before; it loads while rd_next_i, so a stalled reader can hold it.
 module scw_labelling_desc_ram #(

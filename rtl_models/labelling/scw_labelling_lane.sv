@@ -17,9 +17,10 @@
 //   P6     write the descriptor back
 //   merge  the union-find unit on the lane's edge queue, alongside
 // The pixel's moments u^p v^q come from running sums stepped with the pixel counters (forward
-// differences: additions only, no multiplier on the pixel path). A strip of 2 or 3 pixels has
-// its upper neighbour still in P3 .. P6 when P0 reads the row buffer: P2 and P3 take it from the
-// last pixels' registers instead.
+// differences: additions only, no multiplier on the pixel path); its d^2 (for sum_dd) from one
+// 15 x 15 product pipelined through P1 .. P3 (a DSP's A/B, M and P registers). A strip of 2 or
+// 3 pixels has its upper neighbour still in P3 .. P6 when P0 reads the row buffer: P2 and P3
+// take it from the last pixels' registers instead.
 // Nodes are the stage's global numbers: lane i draws its nodes from i * LaneStride up, in the
 // order its pixels need them, and keeps their parents and descriptors in its own banks, addressed
 // by node - i * LaneStride (a power of two with lanes: the low bits). While !en_i (Init, Border, Resolve) the stage reaches the banks
@@ -49,6 +50,8 @@ module scw_labelling_lane #(
   parameter int unsigned M21W  = 22,
   parameter int unsigned M12W  = 22,
   parameter int unsigned M03W  = 22,
+  parameter int unsigned SumDW = 25,
+  parameter int unsigned SumDDW = 40,
   localparam int unsigned Nodes      = MaxTilesX * MaxTilesY * LabelsPerTile,
   localparam int unsigned LaneNodes  = Nodes / Lanes,
   localparam int unsigned LaneStride = (Lanes == 1) ? LaneNodes : (1 << $clog2(LaneNodes)),
@@ -60,7 +63,8 @@ module scw_labelling_lane #(
   localparam int unsigned CntW       = $clog2(LaneNodes + 1),
   localparam int unsigned YW         = $clog2(MaxHeight + 1),
   localparam int unsigned DescW      = AreaW + 4 * PosXW + 4 * PosYW + 2 * DispW + M10W + M01W +
-                                       M20W + M11W + M02W + M30W + M21W + M12W + M03W
+                                       M20W + M11W + M02W + M30W + M21W + M12W + M03W + SumDW +
+                                       SumDDW
 ) (
   input  logic              clk_i,
   input  logic              rst_ni,
@@ -451,6 +455,8 @@ module scw_labelling_lane #(
 
   // ---- P4 .. P6: desc[node] = the pixel (a new label) or desc[node] + the pixel -------------
   typedef struct packed {
+    logic [SumDDW-1:0] sum_dd;
+    logic [SumDW-1:0]  sum_d;
     logic [M03W-1:0]  m03;
     logic [M12W-1:0]  m12;
     logic [M21W-1:0]  m21;
@@ -487,6 +493,11 @@ module scw_labelling_lane #(
   } px_t;
 
   px_t p1_px_q, p2_px_q, p3_px_q, a4_px_q, a5_px_q;
+  // The pixel's d^2 (< 2^30: d < 0x8000), a 15 x 15 product in a DSP's A/B (P1), M (P2) and P
+  // (P3) registers, then on with the pixel (P4, P5).
+  localparam int unsigned DDW = 2 * DispW;
+  logic [DispW-1:0] dd_a_q;
+  logic [DDW-1:0] dd_m_q, dd_p_q, a4_dd_q, a5_dd_q;
   desc_t desc_rd, ram_q, res_q, res2_q, old_q, old_d, base, v;
   logic m1_q, m1_d, old_hit_q, old_hit_d, a6_match, a7_match, a_closest;
 
@@ -522,6 +533,8 @@ module scw_labelling_lane #(
     v.m21       = base.m21 + M21W'(a5_px_q.u2v);
     v.m12       = base.m12 + M12W'(a5_px_q.uv2);
     v.m03       = base.m03 + M03W'(a5_px_q.v3);
+    v.sum_d     = base.sum_d + SumDW'(a5_px_q.d);
+    v.sum_dd    = base.sum_dd + SumDDW'(a5_dd_q);
   end
 
   // A pixel is the last of its node in raster order: the old y_max is never needed. The strip's
@@ -535,11 +548,24 @@ module scw_labelling_lane #(
     if (take_i) begin
       p1_px_q <= {g_v3_q, g_uv2_q, g_u2v_q, g_u3_q, g_v2_q, g_uv_q, g_u2_q, g_v_q, g_u_q,
                   DispW'(p1_d_d)};
+      dd_a_q  <= DispW'(p1_d_d);
     end
-    if (p1_valid_q) p2_px_q <= p1_px_q;
-    if (p2_valid_q) p3_px_q <= p2_px_q;
-    if (p3_valid_q) a4_px_q <= p3_px_q;
-    if (a4_valid_q) a5_px_q <= a4_px_q;
+    if (p1_valid_q) begin
+      p2_px_q <= p1_px_q;
+      dd_m_q  <= DDW'(dd_a_q) * DDW'(dd_a_q);
+    end
+    if (p2_valid_q) begin
+      p3_px_q <= p2_px_q;
+      dd_p_q  <= dd_m_q;
+    end
+    if (p3_valid_q) begin
+      a4_px_q <= p3_px_q;
+      a4_dd_q <= dd_p_q;
+    end
+    if (a4_valid_q) begin
+      a5_px_q <= a4_px_q;
+      a5_dd_q <= a4_dd_q;
+    end
     ram_q     <= desc_rd;
     m1_q      <= m1_d;
     old_hit_q <= old_hit_d;

@@ -7,8 +7,8 @@
 // frame's). Ties in the closest and first points go to the earlier pixel in raster order, so the
 // result is symmetric. No sum can overflow its width at the frame size the widths were derived for.
 // o_o is the union of the a_i and b_i of the last clock with en_i (a datapath register, no reset).
-// Layout, area in the low bits: {m03, m12, m21, m30, m02, m11, m20, m01, m10, first_y, first_x,
-// closest_y, closest_x, d_max, d_min, y_max, y_min, x_max, x_min, area}.
+// Layout, area in the low bits: {sum_dd, sum_d, m03, m12, m21, m30, m02, m11, m20, m01, m10,
+// first_y, first_x, closest_y, closest_x, d_max, d_min, y_max, y_min, x_max, x_min, area}.
 module scw_labelling_merge #(
   parameter int unsigned AreaW = 10,
   parameter int unsigned PosXW = 5,
@@ -23,8 +23,11 @@ module scw_labelling_merge #(
   parameter int unsigned M21W  = 22,
   parameter int unsigned M12W  = 22,
   parameter int unsigned M03W  = 22,
+  parameter int unsigned SumDW = 25,
+  parameter int unsigned SumDDW = 40,
   localparam int unsigned DescW = AreaW + 4 * PosXW + 4 * PosYW + 2 * DispW + M10W + M01W +
-                                  M20W + M11W + M02W + M30W + M21W + M12W + M03W
+                                  M20W + M11W + M02W + M30W + M21W + M12W + M03W + SumDW +
+                                  SumDDW
 ) (
   input  logic             clk_i,
   input  logic             en_i,
@@ -33,6 +36,8 @@ module scw_labelling_merge #(
   output logic [DescW-1:0] o_o
 );
   typedef struct packed {
+    logic [SumDDW-1:0] sum_dd;
+    logic [SumDW-1:0]  sum_d;
     logic [M03W-1:0]  m03;
     logic [M12W-1:0]  m12;
     logic [M21W-1:0]  m21;
@@ -93,5 +98,7 @@ module scw_labelling_merge #(
     o.m21       = a.m21 + b.m21;
     o.m12       = a.m12 + b.m12;
     o.m03       = a.m03 + b.m03;
+    o.sum_d     = a.sum_d + b.sum_d;
+    o.sum_dd    = a.sum_dd + b.sum_dd;
   end
 endmodule

@@ -85,6 +85,8 @@ module scw_pipeline #(
   input  logic [15:0]        cfg_near_mm_i,
   input  logic [15:0]        cfg_min_height_mm_i,
   input  logic [15:0]        cfg_d_limit_q4_i,
+  input  logic               cfg_rule_i,
+  input  logic [7:0]         cfg_spread_i,
   // road (hls::road::RoadConfig)
   input  logic               cfg_road_enable_i,
   input  logic [17:0]        cfg_road_a0_i,
@@ -277,7 +279,7 @@ module scw_pipeline #(
     .cfg_baseline_q8_i, .cfg_focal_q4_i, .cfg_cu_q4_i, .cfg_cv_q4_i, .cfg_veh_x_mm_i,
     .cfg_veh_y_mm_i, .cfg_veh_z_mm_i, .cfg_tunnel_half_w_mm_i, .cfg_tunnel_h_mm_i,
     .cfg_high_mm_i, .cfg_medium_mm_i, .cfg_near_mm_i, .cfg_min_height_mm_i,
-    .cfg_d_limit_q4_i,
+    .cfg_d_limit_q4_i, .cfg_rule_i, .cfg_spread_i,
     .in_valid_i(wi_valid), .in_ready_o(wi_ready), .in_data_i(wi_word[ObjW-1:0]),
     .in_last_i(wi_word[ObjW]),
     .out_valid_o(w_valid), .out_ready_i(w_ready), .out_data_o(w_data), .out_last_o(w_last)

@@ -5,13 +5,17 @@
 // The C++ twin is scw::hls::warning::Warning (hls/warning/warning.hpp) clocked by
 // scw::sim::WarningModel, clock for clock: same in_ready, out_valid and out data every cycle.
 // One pipeline enable, en = !out_valid || out_ready (= in_ready): a word taken at an edge is in
-// S0 after it, in S(Latency-2) Latency-2 enabled edges later, and the next enabled edge folds it
-// into the frame's accumulator; the word that closes the frame (its status word, or a `last`
-// without one) loads the output register on that edge. Stages:
-//   S0              the word's fields (a status word's in the same bits), its flags, and the
-//                   reciprocal table read at min(d_max, table end) (scw_warning_recip; its
-//                   output register holds the entry in S1)
-//   S1 .. S(L-2)    the per-object arithmetic (scw_warning_object) beside the fields
+// R1 after it, in S(Latency-RuleLatency-2) Latency-2 enabled edges later, and the next enabled
+// edge folds it into the frame's accumulator; the word that closes the frame (its status word,
+// or a `last` without one) loads the output register on that edge. Stages:
+//   R1 .. R(RL)     the distance rule (scw_warning_rule): the disparity dq that places the
+//                   object, from its area, sum d, sum d^2 and d_max; beside it the word's
+//                   fields (a status word's in the same bits), its flags and too_close
+//                   (d_max >= d_limit), delayed (scw_warning_delay)
+//   S0              the fields and flags, measurable (dq), and the reciprocal table read at
+//                   min(dq, table end) (scw_warning_recip; its output register holds the entry
+//                   in S1)
+//   S1 .. S(L-RL-2) the per-object arithmetic (scw_warning_object) beside the fields
 //   fold            obstacles counted; the deciding one is the worse severity, then the smaller
 //                   judged distance, then the earlier; on close the result is the accumulator
 //                   with the status word's flags, and stream_error when the table broke the
@@ -42,6 +46,8 @@ module scw_warning #(
   input  logic [15:0]        cfg_near_mm_i,
   input  logic [15:0]        cfg_min_height_mm_i,
   input  logic [15:0]        cfg_d_limit_q4_i,
+  input  logic               cfg_rule_i,    // hls::warning::DistanceRule: 0 closest, 1 spread
+  input  logic [7:0]         cfg_spread_i,  // spread_q4: k of the spread rule, Q4.4
   // the labelling stage's objects, then its status word with last
   input  logic               in_valid_i,
   output logic               in_ready_o,
@@ -53,10 +59,13 @@ module scw_warning #(
   output logic [OutW-1:0]    out_data_o,
   output logic               out_last_o
 );
-  // hls::warning::kLatency: clocks from a word's acceptance to its effect on the result.
-  localparam int unsigned Latency   /*verilator public*/ = 47;
-  localparam int unsigned TableSize /*verilator public*/ = 16 * MaxDisparityPx;
-  localparam int unsigned Stages = Latency - 1;  // S0 .. S(Stages-1), then the fold
+  // hls::warning::kRuleLatency and kLatency: clocks from a word's acceptance to its effect on
+  // the result.
+  localparam int unsigned RuleLatency /*verilator public*/ = 64;
+  localparam int unsigned Latency     /*verilator public*/ = RuleLatency + 47;
+  localparam int unsigned TableSize   /*verilator public*/ = 16 * MaxDisparityPx;
+  localparam int unsigned Stages    = Latency - 1;      // R1 .. R(RL), S0 .. , then the fold
+  localparam int unsigned ObjStages = Stages - RuleLatency;  // S0 .. S(ObjStages-1)
   localparam int unsigned AddrW  = $clog2(TableSize);
   localparam int unsigned FW     = 7 * 16;        // the fields a result reports
   localparam int unsigned DW     = 29;            // distances, signed
@@ -82,22 +91,44 @@ module scw_warning #(
       : {desc.y_max, desc.y_min, desc.x_max, desc.x_min, desc.d_max, desc.closest_y,
          desc.closest_x};
 
-  logic [AddrW-1:0] addr;
-  assign addr = (desc.d_max < 16'(TableSize)) ? desc.d_max[AddrW-1:0] : AddrW'(TableSize - 1);
-
   logic [15:0] d_limit_q;
   always_ff @(posedge clk_i) d_limit_q <= cfg_d_limit_q4_i;
+
+  // ---- R1 .. R(RuleLatency): the distance rule ----------------------------------------------
+  logic [15:0] r_dq;
+  scw_warning_rule #(.Latency(RuleLatency)) u_rule (
+    .clk_i,
+    .en_i        (en),
+    .cfg_rule_i,
+    .cfg_spread_i,
+    .area_i      (desc.area[19:0]),
+    .sum_d_i     (desc.sum_d[34:0]),
+    .sum_dd_i    (desc.sum_dd[49:0]),
+    .d_max_i     (desc.d_max),
+    .dq_o        (r_dq)
+  );
+
+  logic [FW-1:0] r_fields;
+  logic r_status, r_last, r_tc;
+  scw_warning_delay #(.Width(FW + 3), .Depth(RuleLatency)) u_rule_delay (
+    .clk_i, .en_i(en), .d_i({in_status, in_last_i, desc.d_max >= d_limit_q, fields}),
+    .q_o({r_status, r_last, r_tc, r_fields})
+  );
+
+  // ---- S0 -----------------------------------------------------------------------------------
+  logic [AddrW-1:0] addr;
+  assign addr = (r_dq < 16'(TableSize)) ? r_dq[AddrW-1:0] : AddrW'(TableSize - 1);
 
   logic [FW-1:0] s0_fields_q;
   logic s0_status_q, s0_last_q, s0_meas_q, s0_tc_q;
   always_ff @(posedge clk_i) begin
     if (en) begin
-      s0_fields_q <= fields;
-      s0_status_q <= in_status;
-      s0_last_q   <= in_last_i;
-      // measurable: 1 px <= d_max, and d_max >= 0 as int16 (labelling's invalid codes)
-      s0_meas_q   <= !desc.d_max[15] && desc.d_max[14:4] != '0;
-      s0_tc_q     <= desc.d_max >= d_limit_q;
+      s0_fields_q <= r_fields;
+      s0_status_q <= r_status;
+      s0_last_q   <= r_last;
+      // measurable: 1 px <= dq, and dq >= 0 as int16 (labelling's invalid codes)
+      s0_meas_q   <= !r_dq[15] && r_dq[14:4] != '0;
+      s0_tc_q     <= r_tc;  // too close: d_max (not dq) >= d_limit
     end
   end
 
@@ -106,7 +137,7 @@ module scw_warning #(
     .clk_i, .en_i(en), .addr_i(addr), .data_o(s1_recip)
   );
 
-  // ---- S1 .. S(Stages-1) --------------------------------------------------------------------
+  // ---- S1 .. S(ObjStages-1) -----------------------------------------------------------------
   logic [Stages-1:0] valid_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) valid_q <= '0;
@@ -115,7 +146,7 @@ module scw_warning #(
 
   logic [FW-1:0] w_fields;
   logic w_status, w_last;
-  scw_warning_delay #(.Width(FW + 2), .Depth(Stages - 1)) u_word_delay (
+  scw_warning_delay #(.Width(FW + 2), .Depth(ObjStages - 1)) u_word_delay (
     .clk_i, .en_i(en), .d_i({s0_status_q, s0_last_q, s0_fields_q}),
     .q_o({w_status, w_last, w_fields})
   );
@@ -123,7 +154,7 @@ module scw_warning #(
   logic w_obst, w_tun, w_tc;
   logic [1:0] w_sev;
   logic signed [DW-1:0] w_dist, w_dj;
-  scw_warning_object #(.OutStages(Stages - 1)) u_object (
+  scw_warning_object #(.OutStages(ObjStages - 1)) u_object (
     .clk_i,
     .en_i                  (en),
     .cfg_baseline_q8_i,
@@ -256,8 +287,10 @@ module scw_warning #(
   assign out_last_o  = 1'b1;  // one word per frame
 
   // A status word carries no more than objects and three flags; the other descriptor fields
-  // (area, moments, first pixel, d_min) are not part of the warning.
+  // (moments, first pixel, d_min) are not part of the warning, and the distance rule reads only
+  // the low kRuleAreaBits, kRuleSumBits and kRuleSquareBits of area, sum_d and sum_dd.
   logic unused_in;
   assign unused_in = ^{desc.m03, desc.m12, desc.m21, desc.m30, desc.m02, desc.m11, desc.m20,
-                       desc.m01, desc.m10, desc.first_y, desc.first_x, desc.d_min};
+                       desc.m01, desc.m10, desc.first_y, desc.first_x, desc.d_min,
+                       desc.area[31:20], desc.sum_d[63:35], desc.sum_dd[63:50]};
 endmodule

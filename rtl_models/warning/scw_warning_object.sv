@@ -4,8 +4,9 @@
 
 // Bit for bit hls::warning::evaluate<Params>() for what the fold uses (obstacle, severity,
 // in_tunnel, too_close, distance and the judged distance), OutStages enabled clocks after the
-// inputs. The inputs are stage 0: the object's fields and flags as the top registered them; the
-// table's recip(min(d_max, table end)) comes a clock later, at stage 1. Stages (register at the
+// inputs. The inputs are stage 0: the object's fields and flags as the top registered them
+// (measurable from the rule's disparity dq, too_close from d_max, as evaluate() has them); the
+// table's recip(min(dq, table end)) comes a clock later, at stage 1. Stages (register at the
 // end of each):
 //   1         the six pixel offsets (Q.4)
 //   2 .. 5    S = (b * recip + 2^15) >> 16 (mm/px, Q.20)
@@ -55,8 +56,8 @@ module scw_warning_object #(
   input  logic [15:0]        x_max_i,
   input  logic [15:0]        y_min_i,
   input  logic [15:0]        y_max_i,
-  input  logic               measurable_i,
-  input  logic               too_close_i,
+  input  logic               measurable_i,  // 1 px <= dq < 0x8000
+  input  logic               too_close_i,   // d_max >= d_limit
   // stage OutStages
   output logic               obstacle_o,
   output logic [1:0]         severity_o,

@@ -210,7 +210,9 @@ TEST_CASE("labelling: the stored widths hold a full 1280 x 480 frame, and need e
   STATIC_REQUIRE(w.area == 20);
   STATIC_REQUIRE(w.x == 11);
   STATIC_REQUIRE(w.y == 9);
-  STATIC_REQUIRE(w.total() == 484);
+  STATIC_REQUIRE(w.sum_d == 35);
+  STATIC_REQUIRE(w.sum_dd == 50);
+  STATIC_REQUIRE(w.total() == 569);
   // The worst case of every sum: one object of every pixel (every term is non-negative, so no
   // pixel set has larger sums), at the largest disparity.
   Object all = pixel_object(0, 0, 0x7fff);
@@ -221,6 +223,8 @@ TEST_CASE("labelling: the stored widths hold a full 1280 x 480 frame, and need e
   CHECK(tight(all.x_max, w.x));
   CHECK(tight(all.y_max, w.y));
   CHECK(tight(all.d_max, w.d));
+  CHECK(tight(all.sum_d, w.sum_d));
+  CHECK(tight(all.sum_dd, w.sum_dd));
   const std::uint64_t m[9] = {all.m10, all.m01, all.m20, all.m11, all.m02,
                               all.m30, all.m21, all.m12, all.m03};
   for (int i = 0; i < 9; ++i) {
@@ -232,7 +236,7 @@ TEST_CASE("labelling: the stored widths hold a full 1280 x 480 frame, and need e
   CHECK(narrow(corner, w) == corner);
   // The stage's model through a whole full frame at this size: one object, every bit kept.
   using Thesis1 = LabellingParams<W, H, 8, 4, 32, 16>;
-  STATIC_REQUIRE(Thesis1::kWidths.total() == 484);
+  STATIC_REQUIRE(Thesis1::kWidths.total() == 569);
   DispMap full{"full frame", W, H, std::vector<std::uint16_t>(static_cast<std::size_t>(W) * H, 0x7fff)};
   LabellingConfig cfg{W, H, W / 8, H / 4, 0, 1};
   auto model = std::make_unique<scw::sim::LabellingModel<Thesis1>>(cfg);

@@ -136,7 +136,8 @@ cv::Mat object_mask(const LabellingReference& r, int w, int h, int k) {
 
 Object make_object(std::uint32_t area, int x_min, int x_max, int y_min, int y_max, int d_min,
                    int d_max, int closest_x, int closest_y, int first_x, int first_y,
-                   std::array<std::uint64_t, 9> m /* m10 m01 m20 m11 m02 m30 m21 m12 m03 */) {
+                   std::array<std::uint64_t, 9> m /* m10 m01 m20 m11 m02 m30 m21 m12 m03 */,
+                   std::array<std::uint64_t, 2> sums /* sum_d sum_dd */) {
   const auto u16 = [](int v) { return static_cast<std::uint16_t>(v); };
   Object o;
   o.area = area;
@@ -146,6 +147,7 @@ Object make_object(std::uint32_t area, int x_min, int x_max, int y_min, int y_ma
   o.first_x = u16(first_x), o.first_y = u16(first_y);
   o.m10 = m[0], o.m01 = m[1], o.m20 = m[2], o.m11 = m[3], o.m02 = m[4];
   o.m30 = m[5], o.m21 = m[6], o.m12 = m[7], o.m03 = m[8];
+  o.sum_d = sums[0], o.sum_dd = sums[1];
   return o;
 }
 
@@ -387,26 +389,28 @@ TEST_CASE("the join rule takes the later pixel's disparity as the reference", "[
     CHECK(apart.components == 2);
     CHECK(apart.labels == labels_of({{1, 2}}));
     REQUIRE(apart.objects.size() == 2);
-    CHECK(apart.objects[0] == make_object(1, 0, 0, 0, 0, 99, 99, 0, 0, 0, 0, {}));
+    CHECK(apart.objects[0] == make_object(1, 0, 0, 0, 0, 99, 99, 0, 0, 0, 0, {}, {99, 9801}));
     CHECK(apart.objects[1] ==
-          make_object(1, 1, 1, 0, 0, 90, 90, 1, 0, 1, 0, {1, 0, 1, 0, 0, 1, 0, 0, 0}));
+          make_object(1, 1, 1, 0, 0, 90, 90, 1, 0, 1, 0, {1, 0, 1, 0, 0, 1, 0, 0, 0}, {90, 8100}));
     const LabellingReference joined = run(from_rows({{90, 99}}));
     CHECK(joined.labels == labels_of({{1, 1}}));
     REQUIRE(joined.objects.size() == 1);
     CHECK(joined.objects[0] ==
-          make_object(2, 0, 1, 0, 0, 90, 99, 1, 0, 0, 0, {1, 0, 1, 0, 0, 1, 0, 0, 0}));
+          make_object(2, 0, 1, 0, 0, 90, 99, 1, 0, 0, 0, {1, 0, 1, 0, 0, 1, 0, 0, 0},
+                      {189, 17901}));
   }
   SECTION("up neighbour: the same") {
     const LabellingReference apart = run(from_rows({{99}, {90}}));
     CHECK(apart.labels == labels_of({{1}, {2}}));
     REQUIRE(apart.objects.size() == 2);
     CHECK(apart.objects[1] ==
-          make_object(1, 0, 0, 1, 1, 90, 90, 0, 1, 0, 1, {0, 1, 0, 0, 1, 0, 0, 0, 1}));
+          make_object(1, 0, 0, 1, 1, 90, 90, 0, 1, 0, 1, {0, 1, 0, 0, 1, 0, 0, 0, 1}, {90, 8100}));
     const LabellingReference joined = run(from_rows({{90}, {99}}));
     CHECK(joined.labels == labels_of({{1}, {1}}));
     REQUIRE(joined.objects.size() == 1);
     CHECK(joined.objects[0] ==
-          make_object(2, 0, 0, 0, 1, 90, 99, 0, 1, 0, 0, {0, 1, 0, 0, 1, 0, 0, 0, 1}));
+          make_object(2, 0, 0, 0, 1, 90, 99, 0, 1, 0, 0, {0, 1, 0, 0, 1, 0, 0, 0, 1},
+                      {189, 17901}));
   }
   SECTION("a U: the right arm joins the left through the bottom row, or does not") {
     // (1,1)-(2,1): 10 |100 - 99| = 10 < 99 joins; (2,0)-(2,1): later 99, earlier 90 joins.
@@ -416,18 +420,20 @@ TEST_CASE("the join rule takes the later pixel's disparity as the reference", "[
     REQUIRE(u.objects.size() == 1);
     // Pixels (0,0) (2,0) (0,1) (1,1) (2,1).
     CHECK(u.objects[0] ==
-          make_object(5, 0, 2, 0, 1, 90, 100, 0, 0, 0, 0, {5, 3, 9, 3, 3, 17, 5, 3, 3}));
+          make_object(5, 0, 2, 0, 1, 90, 100, 0, 0, 0, 0, {5, 3, 9, 3, 3, 17, 5, 3, 3},
+                      {489, 47901}));
     // Swapped: later 90 against 99 (10 * 9 = 90, not < 90) and later 90 against 100: apart.
     const LabellingReference split = run(from_rows({{100, 0, 99}, {100, 100, 90}}));
     CHECK(split.components == 3);
     CHECK(split.labels == labels_of({{1, 0, 2}, {1, 1, 3}}));
     REQUIRE(split.objects.size() == 3);
     CHECK(split.objects[0] ==
-          make_object(3, 0, 1, 0, 1, 100, 100, 0, 0, 0, 0, {1, 2, 1, 1, 2, 1, 1, 1, 2}));
+          make_object(3, 0, 1, 0, 1, 100, 100, 0, 0, 0, 0, {1, 2, 1, 1, 2, 1, 1, 1, 2},
+                      {300, 30000}));
     CHECK(split.objects[1] ==
-          make_object(1, 2, 2, 0, 0, 99, 99, 2, 0, 2, 0, {2, 0, 4, 0, 0, 8, 0, 0, 0}));
+          make_object(1, 2, 2, 0, 0, 99, 99, 2, 0, 2, 0, {2, 0, 4, 0, 0, 8, 0, 0, 0}, {99, 9801}));
     CHECK(split.objects[2] ==
-          make_object(1, 2, 2, 1, 1, 90, 90, 2, 1, 2, 1, {2, 1, 4, 2, 1, 8, 4, 2, 1}));
+          make_object(1, 2, 2, 1, 1, 90, 90, 2, 1, 2, 1, {2, 1, 4, 2, 1, 8, 4, 2, 1}, {90, 8100}));
   }
   SECTION("joins chain: 100 - 91 - 83 is one object though 83 and 100 would not join") {
     REQUIRE_FALSE(joins(83, 100));
@@ -514,8 +520,10 @@ TEST_CASE("descriptors and moments of a hand-computed object", "[labelling][ref]
   REQUIRE(r.objects.size() == 1);
   const Object& o = r.objects[0];
   // m10 = 1+1+1+2, m01 = 0+1+2+2, m20 = 1+1+1+4, m11 = 0+1+2+4, m02 = 0+1+4+4,
-  // m30 = 1+1+1+8, m21 = 0+1+2+8, m12 = 0+1+4+8, m03 = 0+1+8+8.
-  CHECK(o == make_object(4, 1, 2, 0, 2, 160, 170, 1, 1, 1, 0, {5, 5, 7, 7, 9, 11, 11, 13, 17}));
+  // m30 = 1+1+1+8, m21 = 0+1+2+8, m12 = 0+1+4+8, m03 = 0+1+8+8; sum d = 160+170+170+165,
+  // sum d^2 = 25600+28900+28900+27225.
+  CHECK(o == make_object(4, 1, 2, 0, 2, 160, 170, 1, 1, 1, 0, {5, 5, 7, 7, 9, 11, 11, 13, 17},
+                         {665, 110625}));
   // About the centroid (5/4, 5/4): dx = -1/4 -1/4 -1/4 3/4, dy = -5/4 -1/4 3/4 3/4.
   CHECK(central_moments(o) ==
         std::array<double, 7>{0.75, 0.75, 2.75, 0.375, 0.375, -0.125, -1.125});

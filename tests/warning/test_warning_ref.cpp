@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -57,10 +58,13 @@ ObjectEval evaluate_fixed(const Object& o, const WarningSetup& s) {
   return scw::hls::warning::evaluate<Params>(o, to_fixed(s));
 }
 
-/// An object with closest point (u, v), disparity code dq and the given bounding box.
+/// An object with closest point (u, v), disparity code dq and the given bounding box: one pixel's
+/// sums, so both distance rules place it at dq.
 Object make_object(int u, int v, int dq, int x_min, int y_min, int x_max, int y_max) {
   Object o;
   o.area = 1;
+  o.sum_d = static_cast<std::uint64_t>(dq);
+  o.sum_dd = static_cast<std::uint64_t>(dq) * static_cast<std::uint64_t>(dq);
   o.closest_x = static_cast<std::uint16_t>(u);
   o.closest_y = static_cast<std::uint16_t>(v);
   o.first_x = o.closest_x;
@@ -434,4 +438,77 @@ TEST_CASE("to_fixed names the value that does not fit its port", "[ref][warning]
   WarningSetup d = s;
   d.d_limit_px = 0.5;
   throws_naming(d, "disparity limit");
+}
+
+namespace {
+
+/// `o` carrying the area and sums of the disparity codes `d` (d_min, d_max from them too).
+Object with_codes(Object o, const std::vector<int>& d) {
+  o.area = static_cast<std::uint32_t>(d.size());
+  o.sum_d = o.sum_dd = 0;
+  for (int c : d) {
+    o.sum_d += static_cast<std::uint64_t>(c);
+    o.sum_dd += static_cast<std::uint64_t>(c) * static_cast<std::uint64_t>(c);
+  }
+  o.d_min = static_cast<std::uint16_t>(*std::min_element(d.begin(), d.end()));
+  o.d_max = static_cast<std::uint16_t>(*std::max_element(d.begin(), d.end()));
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("the spread rule: fixed point within one code of the float reference", "[ref][warning]") {
+  std::mt19937 rng(23);
+  for (const double k : {0.0, 0.75, 1.0, 2.5, 15.9375}) {
+    WarningSetup s = thesis_rig_like();
+    s.spread_k = k;
+    const WarningConfig cfg = to_fixed(s);
+    double worst = 0.0;
+    for (int i = 0; i < 3000; ++i) {
+      // A face at one code with noise, and a few edge outliers nearer or farther.
+      const int n = 1 + static_cast<int>(rng() % (i % 3 == 0 ? 20 : 20000));
+      const int centre = 16 + static_cast<int>(rng() % 2000);
+      std::normal_distribution<double> noise(0.0, 1.0 + rng() % 40);
+      std::vector<int> d;
+      for (int j = 0; j < n; ++j) {
+        const int outlier = rng() % 50 == 0 ? static_cast<int>(rng() % 200) - 100 : 0;
+        d.push_back(std::clamp(static_cast<int>(std::lround(centre + noise(rng))) + outlier, 1,
+                               0x7fff));
+      }
+      const Object o = with_codes(make_object(320, 240, 0, 300, 200, 340, 300), d);
+      const double fixed_px = scw::hls::warning::rule_disparity(o, cfg) / 16.0;
+      const double ref_px = scw::host::warning::rule_disparity_px(o, s);
+      worst = std::max(worst, std::abs(fixed_px - ref_px));
+      REQUIRE(fixed_px <= o.d_max / 16.0);
+    }
+    INFO("k " << k << ": worst |fixed - reference| " << worst << " px");
+    // The root is rounded (0.5 / A codes of error times k) and the quotient rounded (half a code).
+    CHECK(worst <= 1.0 / 16.0);
+  }
+}
+
+TEST_CASE("the spread rule ignores edge outliers that move the closest rule", "[ref][warning]") {
+  // A face at 25 px (code 400) with one code of noise, and 1 % of pixels 2 px nearer (what block
+  // matching leaves at an object's edges, docs/scene.md).
+  std::vector<int> d;
+  for (int j = 0; j < 2000; ++j) d.push_back(399 + j % 3);
+  for (int j = 0; j < 20; ++j) d.push_back(432);
+  const Object o = with_codes(make_object(320, 240, 0, 300, 200, 340, 300), d);
+  WarningSetup s = thesis_rig_like();
+  s.distance_rule = scw::hls::warning::DistanceRule::kClosest;
+  CHECK(scw::hls::warning::rule_disparity(o, to_fixed(s)) == 432);
+  s.distance_rule = scw::hls::warning::DistanceRule::kSpread;
+  s.spread_k = 0.75;
+  const auto code = scw::hls::warning::rule_disparity(o, to_fixed(s));
+  // mean 400.3, sd 3.3: mean + 0.75 sd = 402.8 -> 403.
+  CHECK(code == 403);
+  CHECK(evaluate_ref(o, s).disparity_px == Approx(402.8 / 16).margin(0.01));
+  // A malformed object (area 0, or sums no pixel set has) falls back to d_max or its mean.
+  Object bad = o;
+  bad.area = 0;
+  CHECK(scw::hls::warning::rule_disparity(bad, to_fixed(s)) == 432);
+  bad = o;
+  bad.sum_dd = 0;  // S1^2 > A S2: no spread
+  CHECK(scw::hls::warning::rule_disparity(bad, to_fixed(s)) ==
+        (16 * o.sum_d + 8 * o.area) / (16 * o.area));
 }

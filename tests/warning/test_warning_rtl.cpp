@@ -2,7 +2,9 @@
 // [rtl] scw_warning against the warning model clock for clock (the same cycle trace) under every
 // stall pattern, both against a direct per-frame fold of evaluate(): random object tables that
 // reach every branch of the arithmetic, empty and back-to-back frames, broken tables, camera
-// set-ups from the Karlsruhe rig, the thesis and the ports' extremes.
+// set-ups from the Karlsruhe rig, the thesis and the ports' extremes, under both distance rules
+// (objects with realistic and adversarial disparity sums); and its square root and distance
+// rule alone, bit for bit.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -17,6 +19,8 @@
 #include "Vwarning_a_scw_warning.h"
 #include "Vwarning_b.h"
 #include "Vwarning_b_scw_warning.h"
+#include "Vwarning_rule.h"
+#include "Vwarning_rule_scw_warning_rule.h"
 #include "Vwarning_sqrt.h"
 #include "Vwarning_sqrt_scw_warning_sqrt.h"
 #include "hls/warning/warning_params.hpp"
@@ -49,6 +53,12 @@ static_assert(Vwarning_a_scw_warning::Latency == hw::kLatency);
 // isqrt_round's loop: 27 root bits, so any n below 2^58 (three squares of 29-bit coordinates).
 static_assert(Vwarning_sqrt_scw_warning_sqrt::RootW == 27 &&
               Vwarning_sqrt_scw_warning_sqrt::InW == 58);
+// The distance rule alone: its operand widths and depth are the C++ constants.
+using Rule = Vwarning_rule_scw_warning_rule;
+static_assert(Rule::AreaW == hw::kRuleAreaBits && Rule::SumW == hw::kRuleSumBits &&
+              Rule::SquareW == hw::kRuleSquareBits && Rule::RootW == hw::kRuleRootBits &&
+              Rule::Latency == hw::kRuleLatency);
+static_assert(Vwarning_a_scw_warning::RuleLatency == hw::kRuleLatency);
 
 // ---- words ------------------------------------------------------------------------------------
 
@@ -82,9 +92,97 @@ void append_frame(std::vector<LabelPacket>& words, const std::vector<Object>& ob
 
 // ---- the independent expectation --------------------------------------------------------------
 
+// ---- disparity sums ---------------------------------------------------------------------------
+
+using Rng = std::mt19937_64;
+
+std::uint64_t pick_u(Rng& rng, std::uint64_t a, std::uint64_t b) {
+  return std::uniform_int_distribution<std::uint64_t>(a, b)(rng);
+}
+
+/// Area `area` and the sums of a random multiset of that many disparities whose largest is
+/// d_max, as the labelling stage accumulates them: up to five distinct codes, spread below
+/// d_max by nothing, a sixteenth, a quarter or all of it; now and then d_max is an outlier of
+/// one to three pixels (the case the spread rule is for).
+void realistic_sums(Rng& rng, Object& o, std::uint32_t area) {
+  const std::uint64_t d_max = o.d_max;
+  const std::uint64_t widths[] = {0, d_max / 16, d_max / 4, d_max};
+  const std::uint64_t width = widths[pick_u(rng, 0, 3)];
+  const int distinct = static_cast<int>(pick_u(rng, 1, 5));
+  const bool outlier = pick_u(rng, 0, 3) == 0;
+  std::uint64_t left = area, s1 = 0, s2 = 0;
+  for (int i = 0; i < distinct && left > 0; ++i) {
+    const std::uint64_t d = i == 0 ? d_max : d_max - pick_u(rng, 0, width);
+    const std::uint64_t n = i + 1 == distinct ? left
+                            : i == 0 && outlier ? std::min<std::uint64_t>(left, pick_u(rng, 1, 3))
+                                                : pick_u(rng, 1, left);
+    s1 += n * d;
+    s2 += n * d * d;
+    left -= n;
+  }
+  o.area = area;
+  o.sum_d = s1;
+  o.sum_dd = s2;
+}
+
+/// Mostly small objects, one in ten up to the widest area the rule reads (2^20 - 1 pixels).
+void realistic_sums(Rng& rng, Object& o) {
+  const std::uint64_t widest = (std::uint64_t{1} << hw::kRuleAreaBits) - 1;
+  const auto area = static_cast<std::uint32_t>(pick_u(rng, 0, 9) == 0 ? pick_u(rng, 1, widest)
+                                                                       : pick_u(rng, 1, 4000));
+  realistic_sums(rng, o, area);
+}
+
+/// Sums no labelling stage sends, but the ports carry: A = 0, any 64-bit words (cut to the
+/// rule's widths), S1^2 > A S2, the widest operands, means past 16 bits, garbage above the cut.
+void adversarial_sums(Rng& rng, Object& o) {
+  switch (pick_u(rng, 0, 7)) {
+    case 0:  // den = 0: q saturates, dq = d_max
+      o.area = static_cast<std::uint32_t>(pick_u(rng, 0, 1) ? 0 : rng() << 20);
+      o.sum_d = rng();
+      o.sum_dd = rng();
+      break;
+    case 1:
+      o.area = static_cast<std::uint32_t>(rng());
+      o.sum_d = rng();
+      o.sum_dd = rng();
+      break;
+    case 2:  // a negative "variance": V = 0
+      o.area = static_cast<std::uint32_t>(pick_u(rng, 1, 1000));
+      o.sum_d = pick_u(rng, 1u << 20, (std::uint64_t{1} << hw::kRuleSumBits) - 1);
+      o.sum_dd = pick_u(rng, 0, o.sum_d);
+      break;
+    case 3:  // the widest: V near 2^70, R near 2^35, num near 2^44
+      o.area = static_cast<std::uint32_t>(((1u << hw::kRuleAreaBits) - 1) - pick_u(rng, 0, 3));
+      o.sum_d = pick_u(rng, 0, 1) ? 0 : pick_u(rng, 0, 1u << 20);
+      o.sum_dd = ~std::uint64_t{0} - pick_u(rng, 0, 1000);
+      break;
+    case 4: {  // a mean about 4096 px: q just below or past 16 bits
+      const std::uint64_t a = pick_u(rng, 1, 1u << 15);
+      const std::uint64_t d = pick_u(rng, 0xfff0, 0x10010);
+      o.area = static_cast<std::uint32_t>(a);
+      o.sum_d = a * d;
+      o.sum_dd = a * d * d + pick_u(rng, 0, 1000);
+      break;
+    }
+    case 5:  // realistic, and garbage above the bits the rule reads
+      realistic_sums(rng, o);
+      o.area |= static_cast<std::uint32_t>(rng() << hw::kRuleAreaBits);
+      o.sum_d |= rng() << hw::kRuleSumBits;
+      o.sum_dd |= rng() << hw::kRuleSquareBits;
+      break;
+    default:
+      realistic_sums(rng, o);
+  }
+}
+
+/// How TableGen fills area, sum_d and sum_dd.
+enum class Sums { kRealistic, kAdversarial };
+
 /// What the tables reached, counted over every object and frame folded.
 struct Coverage {
   int not_measurable = 0, negative_code = 0, too_close = 0, past_table = 0, low = 0;
+  int moved = 0;  // measurable, placed nearer than d_max says (the spread rule's dq < d_max)
   int tunnel[4] = {0, 0, 0, 0}, outside[4] = {0, 0, 0, 0};  // by severity
   int negative_x = 0, negative_y = 0, negative_distance = 0, saturated_root = 0;
   int ties = 0;         // frames where two obstacles tie in severity and judged distance
@@ -127,11 +225,12 @@ std::vector<FrameResult> fold_frames(const std::vector<LabelPacket>& words,
         const Object& o = objects[i];
         if (!e.measurable) {
           ++cov->not_measurable;
-          if (o.d_max >= 0x8000u) ++cov->negative_code;
+          if (e.d_q4 >= 0x8000u) ++cov->negative_code;
           continue;
         }
+        if (e.d_q4 < o.d_max) ++cov->moved;
         if (e.too_close) ++cov->too_close;
-        if (o.d_max >= Params::kTableSize) ++cov->past_table;
+        if (e.d_q4 >= static_cast<std::uint32_t>(Params::kTableSize)) ++cov->past_table;
         const auto sq = [](std::int64_t v) { return static_cast<std::uint64_t>(v * v); };
         if (sq(e.x_mm) + sq(e.y_mm) + sq(e.z_mm) >= (std::uint64_t{1} << 54)) ++cov->saturated_root;
         if (!e.obstacle) {
@@ -162,13 +261,22 @@ std::vector<FrameResult> fold_frames(const std::vector<LabelPacket>& words,
 
 /// Random objects of every kind the stage tells apart, placed in 3D with the camera of `s` so
 /// that they land in (or next to) the tunnel at chosen distances, plus codes the table does not
-/// cover and plain random fields. Seeded: the same seed gives the same tables.
+/// cover and plain random fields; each with disparity sums as `sums` says (an exact copy of the
+/// previous object keeps its). Seeded: the same seed gives the same tables.
 class TableGen {
  public:
-  TableGen(const WarningSetup& s, const WarningConfig& cfg, int table_size, std::uint64_t seed)
-      : s_(s), cfg_(cfg), table_(table_size), rng_(seed) {}
+  TableGen(const WarningSetup& s, const WarningConfig& cfg, int table_size, std::uint64_t seed,
+           Sums sums = Sums::kRealistic)
+      : s_(s), cfg_(cfg), table_(table_size), rng_(seed), sums_(sums) {}
 
   Object next() {
+    tie_ = false;
+    Object o = shape();
+    return tie_ ? o : finish(o);
+  }
+
+ private:
+  Object shape() {
     switch (pick(0, 11)) {
       case 0:
       case 1:
@@ -197,6 +305,17 @@ class TableGen {
     }
   }
 
+  /// The object with its sums; the next tie copies it.
+  Object finish(Object o) {
+    if (sums_ == Sums::kAdversarial)
+      adversarial_sums(rng_, o);
+    else
+      realistic_sums(rng_, o);
+    last_ = o;
+    return o;
+  }
+
+ public:
   /// Frames of 0 .. max_objects objects (a few empty), each closed by its status word; the
   /// labelling flags are set now and then, as an overflowing labelling stage would.
   std::vector<LabelPacket> frames(int n, int max_objects) {
@@ -208,7 +327,7 @@ class TableGen {
           break;
         case 1:  // objects, but none an obstacle
           for (int i = pick(1, 4); i > 0; --i)
-            objs.push_back(pick(0, 1) ? low_object() : not_measurable());
+            objs.push_back(finish(pick(0, 1) ? low_object() : not_measurable()));
           break;
         default:
           for (int i = pick(1, max_objects); i > 0; --i) objs.push_back(next());
@@ -238,8 +357,7 @@ class TableGen {
       default:
         o.d_max = static_cast<std::uint16_t>(pick(16, 2 * table_));
     }
-    last_ = o;
-    return o;
+    return finish(o);
   }
 
  private:
@@ -251,10 +369,9 @@ class TableGen {
     return static_cast<std::uint16_t>(std::clamp(std::lround(v), 0L, 65535L));
   }
 
-  /// What the stage must ignore: area, d_min, the first pixel and the moments.
+  /// What the stage must ignore: d_min, the first pixel and the moments.
   Object noise() {
     Object o;
-    o.area = static_cast<std::uint32_t>(rng_());
     o.first_x = u16();
     o.first_y = u16();
     for (std::uint64_t* m :
@@ -326,15 +443,16 @@ class TableGen {
     last_ = o;
     return o;
   }
-  /// The previous object again (a tie in everything), or its closest point and code under
-  /// another box (a tie in severity and distance, most of the time).
+  /// The previous object again (a tie in everything), or its closest point, code and sums
+  /// under another box (a tie in severity and distance, most of the time).
   Object tie_of_last() {
+    tie_ = true;
     Object o = last_;
     if (pick(0, 1)) {
       o.x_min = static_cast<std::uint16_t>(std::max(0, o.x_min - pick(0, 3)));
       o.x_max = static_cast<std::uint16_t>(std::min(65535, o.x_max + pick(0, 3)));
       o.y_min = static_cast<std::uint16_t>(std::max(0, o.y_min - pick(0, 3)));
-      o.area = static_cast<std::uint32_t>(rng_());
+      o.first_x = u16();
     }
     return o;
   }
@@ -342,7 +460,9 @@ class TableGen {
   WarningSetup s_;
   WarningConfig cfg_;
   int table_;
-  std::mt19937_64 rng_;
+  Rng rng_;
+  Sums sums_;
+  bool tie_ = false;
   Object last_{};
 };
 
@@ -386,6 +506,24 @@ struct Camera {
 constexpr Camera kKarlsruhe{"Karlsruhe-like", 700.0, 0.54, 672.0, 195.0};
 constexpr Camera kThesis{"thesis-like", 1000.0, 0.6, 640.0, 240.0};
 
+/// A distance rule and its k, set on a configuration.
+struct RuleCase {
+  const char* name;
+  hw::DistanceRule rule;
+  std::uint8_t spread_q4;
+};
+constexpr RuleCase kRuleCases[] = {{"closest", hw::DistanceRule::kClosest, 0},
+                                   {"spread k 0.75", hw::DistanceRule::kSpread, 12},
+                                   {"spread k 0", hw::DistanceRule::kSpread, 0},
+                                   {"spread k 2.5", hw::DistanceRule::kSpread, 40},
+                                   {"spread k 15.94", hw::DistanceRule::kSpread, 255}};
+
+WarningConfig with_rule(WarningConfig cfg, const RuleCase& r) {
+  cfg.rule = r.rule;
+  cfg.spread_q4 = r.spread_q4;
+  return cfg;
+}
+
 WarningSetup setup_of(const Camera& c, double d_limit_px) {
   WarningSetup s;
   s.focal_px = c.f;
@@ -422,12 +560,17 @@ TEST_CASE("scw_warning equals the model and the direct fold on random tables", "
   for (const Camera& cam : {kKarlsruhe, kThesis}) {
     // d_limit at the table's end, and inside it (codes between are too close but in the table).
     for (double d_limit : {64.0, 48.0}) {
-      DYNAMIC_SECTION(cam.name << ", d_limit " << d_limit << " px, 64 px table") {
-        const WarningSetup s = setup_of(cam, d_limit);
-        const WarningConfig cfg = scw::host::warning::to_fixed(s);
-        TableGen gen(s, cfg, ParamsA::kTableSize, 1000 + static_cast<std::uint64_t>(d_limit));
-        const auto words = gen.frames(40, 40);
-        require_full_coverage(check_tables<Vwarning_a, ParamsA>(words, cfg));
+      for (const RuleCase& rule : kRuleCases) {
+        DYNAMIC_SECTION(cam.name << ", d_limit " << d_limit << " px, 64 px table, " << rule.name) {
+          const WarningSetup s = setup_of(cam, d_limit);
+          const WarningConfig cfg = with_rule(scw::host::warning::to_fixed(s), rule);
+          TableGen gen(s, cfg, ParamsA::kTableSize,
+                       1000 + static_cast<std::uint64_t>(d_limit) + 7 * rule.spread_q4);
+          const auto words = gen.frames(40, 40);
+          const Coverage c = check_tables<Vwarning_a, ParamsA>(words, cfg);
+          require_full_coverage(c);
+          if (rule.rule == hw::DistanceRule::kSpread) CHECK(c.moved > 0);
+        }
       }
     }
   }
@@ -436,15 +579,35 @@ TEST_CASE("scw_warning equals the model and the direct fold on random tables", "
 TEST_CASE("scw_warning with a 32 px table equals the model and the direct fold", "[warning][rtl]") {
   for (const Camera& cam : {kKarlsruhe, kThesis}) {
     for (double d_limit : {32.0, 20.0}) {
-      DYNAMIC_SECTION(cam.name << ", d_limit " << d_limit << " px, 32 px table") {
-        const WarningSetup s = setup_of(cam, d_limit);
-        const WarningConfig cfg = scw::host::warning::to_fixed(s);
-        TableGen gen(s, cfg, ParamsB::kTableSize, 2000 + static_cast<std::uint64_t>(d_limit));
+      for (const RuleCase& rule : {kRuleCases[0], kRuleCases[1]}) {
+        DYNAMIC_SECTION(cam.name << ", d_limit " << d_limit << " px, 32 px table, " << rule.name) {
+          const WarningSetup s = setup_of(cam, d_limit);
+          const WarningConfig cfg = with_rule(scw::host::warning::to_fixed(s), rule);
+          TableGen gen(s, cfg, ParamsB::kTableSize, 2000 + static_cast<std::uint64_t>(d_limit));
+          const auto words = gen.frames(30, 30);
+          const Coverage c = check_tables<Vwarning_b, ParamsB>(words, cfg);
+          CHECK(c.past_table > 0);
+          CHECK(c.too_close > 0);
+          CHECK(c.tunnel[3] > 0);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("scw_warning equals the model on adversarial disparity sums", "[warning][rtl]") {
+  // Area 0, random 64-bit sums, S1^2 > A S2, the widest operands, means past 16 bits: the
+  // spread rule still places every object exactly as rule_disparity() does.
+  for (const Camera& cam : {kKarlsruhe, kThesis}) {
+    for (const RuleCase& rule : kRuleCases) {
+      DYNAMIC_SECTION(cam.name << ", " << rule.name) {
+        const WarningSetup s = setup_of(cam, 64.0);
+        const WarningConfig cfg = with_rule(scw::host::warning::to_fixed(s), rule);
+        TableGen gen(s, cfg, ParamsA::kTableSize, 4000 + rule.spread_q4, Sums::kAdversarial);
         const auto words = gen.frames(30, 30);
-        const Coverage c = check_tables<Vwarning_b, ParamsB>(words, cfg);
-        CHECK(c.past_table > 0);
-        CHECK(c.too_close > 0);
+        const Coverage c = check_tables<Vwarning_a, ParamsA>(words, cfg);
         CHECK(c.tunnel[3] > 0);
+        CHECK(c.not_measurable > 0);
       }
     }
   }
@@ -486,20 +649,28 @@ TEST_CASE("scw_warning equals the model at the extremes of every port", "[warnin
   zero_height.baseline_q8 = 12345;
   zero_height.focal_q4 = 9999;
   zero_height.veh_z_mm = 32767;
-  for (const auto& [name, cfg] : {std::pair<const char*, WarningConfig>{"widest", wide},
-                                  {"narrowest", narrow},
-                                  {"zero tunnel", zero_height}}) {
-    DYNAMIC_SECTION(name) {
-      TableGen gen(setup_of(kKarlsruhe, 64.0), cfg, ParamsA::kTableSize, 77);
-      std::vector<LabelPacket> words;
-      for (int f = 0; f < 25; ++f) {
-        std::vector<Object> objs;
-        for (int i = 0; i < f % 9; ++i) objs.push_back(gen.random_fields());
-        append_frame(words, objs);
+  for (const auto& [name, cfg_closest] :
+       {std::pair<const char*, WarningConfig>{"widest", wide},
+        {"narrowest", narrow},
+        {"zero tunnel", zero_height}}) {
+    // The thesis's rule with realistic sums, and the spread rule (the widest k too) with
+    // adversarial ones.
+    for (const RuleCase& rule : {kRuleCases[0], kRuleCases[1], kRuleCases[4]}) {
+      DYNAMIC_SECTION(name << ", " << rule.name) {
+        const WarningConfig cfg = with_rule(cfg_closest, rule);
+        const bool closest = rule.rule == hw::DistanceRule::kClosest;
+        TableGen gen(setup_of(kKarlsruhe, 64.0), cfg, ParamsA::kTableSize, 77,
+                     closest ? Sums::kRealistic : Sums::kAdversarial);
+        std::vector<LabelPacket> words;
+        for (int f = 0; f < 25; ++f) {
+          std::vector<Object> objs;
+          for (int i = 0; i < f % 9; ++i) objs.push_back(gen.random_fields());
+          append_frame(words, objs);
+        }
+        const Coverage c = check_tables<Vwarning_a, ParamsA>(words, cfg);
+        if (closest && std::string(name) == "widest") CHECK(c.saturated_root >= 3);
+        if (closest && std::string(name) == "zero tunnel") CHECK(c.negative_distance > 0);
       }
-      const Coverage c = check_tables<Vwarning_a, ParamsA>(words, cfg);
-      if (std::string(name) == "widest") CHECK(c.saturated_root >= 3);
-      if (std::string(name) == "zero tunnel") CHECK(c.negative_distance > 0);
     }
   }
   SECTION("random configurations") {
@@ -521,8 +692,11 @@ TEST_CASE("scw_warning equals the model at the extremes of every port", "[warnin
       cfg.near_mm = static_cast<std::uint16_t>(u(0, 0xffff));
       cfg.min_height_mm = static_cast<std::uint16_t>(u(0, 0xffff));
       cfg.d_limit_q4 = static_cast<std::uint16_t>(u(16, ParamsB::kTableSize));
+      cfg.rule = k % 2 ? hw::DistanceRule::kSpread : hw::DistanceRule::kClosest;
+      cfg.spread_q4 = static_cast<std::uint8_t>(u(0, 255));
       INFO("configuration " << k);
-      TableGen gen(setup_of(kThesis, 32.0), cfg, ParamsB::kTableSize, 300 + k);
+      TableGen gen(setup_of(kThesis, 32.0), cfg, ParamsB::kTableSize, 300 + k,
+                   k % 4 == 3 ? Sums::kAdversarial : Sums::kRealistic);
       std::vector<LabelPacket> words;
       for (int f = 0; f < 12; ++f) {
         std::vector<Object> objs;
@@ -647,7 +821,9 @@ TEST_CASE("scw_warning decides ties like the model: the earlier obstacle", "[war
     o.y_max = static_cast<std::uint16_t>(std::lround(s.cv_px - f * yb / z));
     o.closest_x = static_cast<std::uint16_t>((o.x_min + o.x_max) / 2);
     o.closest_y = o.y_max;
-    o.d_max = static_cast<std::uint16_t>(std::lround(16.0 * f * b / z));
+    o.area = 1u + static_cast<std::uint32_t>((o.x_max - o.x_min) * (o.y_max - o.y_min));
+    // every pixel at one code: either rule places it there
+    scw::fixtures::set_uniform_code(o, static_cast<std::uint16_t>(std::lround(16.0 * f * b / z)));
     return o;
   };
   Object a = car(8.0, 0.0), a_wider = a;
@@ -752,4 +928,173 @@ TEST_CASE("scw_warning_sqrt equals isqrt_round at every rounding boundary", "[wa
   m.reset();
   CHECK(checked >= ns.size());
   CHECK(bad == 0);
+}
+
+namespace {
+
+/// One case of the rule alone: the object's fields it reads.
+struct RuleIn {
+  std::uint32_t area = 0;
+  std::uint64_t sum_d = 0, sum_dd = 0;
+  std::uint16_t d_max = 0;
+};
+
+/// Cases that reach every part of scw_warning_rule: realistic multisets, the square root's
+/// rounding boundaries (V = r^2 - 1, r^2, r^2 + r, r^2 + r + 1, small and near 2^70), the
+/// quotient's (means about 4096 px, where q leaves 16 bits), d_max on either side of q, and
+/// adversarial words.
+std::vector<RuleIn> rule_cases(Rng& rng, int n) {
+  std::vector<RuleIn> v;
+  auto u16 = [&rng] { return static_cast<std::uint16_t>(rng()); };
+  constexpr std::uint64_t kS2Max = (std::uint64_t{1} << hw::kRuleSquareBits) - 1;
+  while (static_cast<int>(v.size()) < n) {
+    RuleIn c;
+    Object o;
+    switch (pick_u(rng, 0, 9)) {
+      case 0:
+      case 1:
+      case 2: {  // realistic: d_max the largest code
+        o.d_max = pick_u(rng, 0, 3) ? static_cast<std::uint16_t>(pick_u(rng, 0, 0x7fff)) : u16();
+        realistic_sums(rng, o);
+        break;
+      }
+      case 3: {  // A = 1: V = S2 - S1^2 at the root's rounding boundaries
+        const std::uint64_t s1 = pick_u(rng, 0, 1u << 22);
+        const std::uint64_t r = pick_u(rng, 0, 1) ? pick_u(rng, 0, 3000) : pick_u(rng, 0, 1u << 24);
+        const std::uint64_t vs[] = {r * r - (r > 0), r * r, r * r + r, r * r + r + 1};
+        o.area = 1;
+        o.sum_d = s1;
+        o.sum_dd = s1 * s1 + vs[pick_u(rng, 0, 3)];
+        o.d_max = u16();
+        break;
+      }
+      case 4: {  // S1 = 0, A = 2^19 .. 2^20 - 1: V = A S2 = r^2, r^2 + r or r^2 + r +- A, r ~ 2^34
+        const std::uint64_t a = pick_u(rng, 1u << 19, (1u << 20) - 1);
+        const std::uint64_t m = pick_u(rng, 1, (std::uint64_t{1} << 35) / a - 1);  // r = a m < 2^35
+        const std::uint64_t r = a * m;
+        std::uint64_t s2 = 0;
+        switch (pick_u(rng, 0, 3)) {
+          case 0: s2 = a * m * m; break;      // V = r^2
+          case 1: s2 = m * (r + 1); break;    // V = r^2 + r: not rounded up
+          case 2: s2 = m * (r + 1) + 1; break;  // V = r^2 + r + A: rounded up
+          default: s2 = m * (r + 1) - 1;      // V = r^2 + r - A
+        }
+        if (s2 > kS2Max) continue;
+        o.area = static_cast<std::uint32_t>(a);
+        o.sum_d = 0;
+        o.sum_dd = s2;
+        o.d_max = u16();
+        break;
+      }
+      case 5: {  // a uniform mean about 4096 px, plus a little spread: q about 2^16
+        const std::uint64_t a = pick_u(rng, 1, 1u << 18);
+        const std::uint64_t d = pick_u(rng, 0xffe0, 0x10020);
+        o.area = static_cast<std::uint32_t>(a);
+        o.sum_d = a * d;
+        o.sum_dd = a * d * d + pick_u(rng, 0, 1) * pick_u(rng, 0, 1u << 20);
+        o.d_max = pick_u(rng, 0, 1) ? 0xffff : u16();
+        break;
+      }
+      case 6:  // d_max near q: realistic, then d_max moved a little
+        o.d_max = static_cast<std::uint16_t>(pick_u(rng, 16, 0x7fff));
+        realistic_sums(rng, o);
+        o.d_max = static_cast<std::uint16_t>(o.d_max - pick_u(rng, 0, std::min<int>(o.d_max, 40)));
+        break;
+      case 7:  // A = 1, anything
+        o.area = 1;
+        o.sum_d = rng();
+        o.sum_dd = rng();
+        o.d_max = u16();
+        break;
+      default:
+        o.d_max = u16();
+        adversarial_sums(rng, o);
+    }
+    c.area = o.area;
+    c.sum_d = o.sum_d;
+    c.sum_dd = o.sum_dd;
+    c.d_max = o.d_max;
+    v.push_back(c);
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("scw_warning_rule equals rule_disparity bit for bit", "[warning][rtl]") {
+  Rng rng(29);
+  const RuleCase extra[] = {{"spread k 1/16", hw::DistanceRule::kSpread, 1},
+                            {"spread k 1", hw::DistanceRule::kSpread, 16},
+                            {"spread k 8", hw::DistanceRule::kSpread, 128},
+                            {"spread k 12.06", hw::DistanceRule::kSpread, 193}};
+  std::vector<RuleCase> rules(std::begin(kRuleCases), std::end(kRuleCases));
+  rules.insert(rules.end(), std::begin(extra), std::end(extra));
+
+  const std::size_t latency = Rule::Latency;
+  VerilatedContext ctx;
+  auto m = std::make_unique<Vwarning_rule>(&ctx, "rule");
+  auto clock = [&m] {
+    m->clk_i = 0;
+    m->eval();
+    m->clk_i = 1;
+    m->eval();
+  };
+  auto low = [](std::uint64_t v, int bits) { return v & ((std::uint64_t{1} << bits) - 1); };
+  std::size_t bad = 0, checked = 0, moved = 0, saturated = 0, zero_v = 0;
+  for (const RuleCase& rc : rules) {
+    INFO(rc.name);
+    WarningConfig cfg;
+    cfg.rule = rc.rule;
+    cfg.spread_q4 = rc.spread_q4;
+    // cfg_* are static: set, then a clock before the first case.
+    m->cfg_rule_i = static_cast<std::uint8_t>(rc.rule);
+    m->cfg_spread_i = rc.spread_q4;
+    m->en_i = 0;
+    clock();
+    const auto cases = rule_cases(rng, 4000);
+    std::size_t fed = 0;
+    // Idle clocks (en low) now and then: the pipeline must hold.
+    while (fed < cases.size() + latency) {
+      const bool en = rng() % 4 != 0;
+      const RuleIn& in = cases[std::min(fed, cases.size() - 1)];
+      m->en_i = en;
+      m->area_i = static_cast<std::uint32_t>(low(in.area, hw::kRuleAreaBits));
+      m->sum_d_i = low(in.sum_d, hw::kRuleSumBits);
+      m->sum_dd_i = low(in.sum_dd, hw::kRuleSquareBits);
+      m->d_max_i = in.d_max;
+      clock();
+      if (en) ++fed;
+      if (fed >= latency && fed - latency < cases.size()) {
+        const RuleIn& c = cases[fed - latency];
+        Object o;
+        o.area = c.area;
+        o.sum_d = c.sum_d;
+        o.sum_dd = c.sum_dd;
+        o.d_max = c.d_max;
+        const std::uint32_t want = hw::rule_disparity(o, cfg);
+        ++checked;
+        if (want < c.d_max) ++moved;
+        const std::uint64_t a = low(c.area, hw::kRuleAreaBits);
+        const std::uint64_t s1 = low(c.sum_d, hw::kRuleSumBits);
+        const std::uint64_t s2 = low(c.sum_dd, hw::kRuleSquareBits);
+        using u128 = scw::hls::labelling::u128;
+        if (u128{a} * s2 <= u128{s1} * s1) ++zero_v;
+        if (a == 0 || u128{16} * s1 >= (u128{16} * a) << 16) ++saturated;
+        if (m->dq_o != want && ++bad <= 5)
+          FAIL_CHECK("area " << c.area << ", sum_d " << c.sum_d << ", sum_dd " << c.sum_dd
+                             << ", d_max " << c.d_max << ": RTL " << m->dq_o
+                             << ", rule_disparity " << want);
+      }
+    }
+  }
+  Verilated::threadContextp(&ctx);  // see sim/verilated_harness.hpp
+  m->final();
+  m.reset();
+  CHECK(checked >= rules.size() * 4000);  // held outputs are checked again
+  CHECK(bad == 0);
+  // What the cases reached (moved: the spread rule placed the object nearer than d_max).
+  INFO("moved " << moved << ", saturated " << saturated << ", V = 0 " << zero_v);
+  CHECK(moved > 1000);
+  CHECK(saturated > 100);
+  CHECK(zero_v > 100);
 }

@@ -20,7 +20,7 @@ module tb_labelling_replay #(
   parameter int unsigned WordsOut      = 12,
   parameter int unsigned Frames        = 1
 );
-  localparam int unsigned OutW  = 1 + 32 + 10 * 16 + 9 * 64;  // sim/labelling_pack.hpp: 769
+  localparam int unsigned OutW  = scw_pkg::ObjWordBits;  // sim/labelling_pack.hpp: 897
   localparam int unsigned Nodes = MaxTilesX * MaxTilesY * LabelsPerTile;
   // Generous: the stage takes about one beat a clock, then sweeps its used nodes twice a frame;
   // the source idles 1 clock in 4 and the sink 3 in 7.
@@ -28,7 +28,7 @@ module tb_labelling_replay #(
                                           + 10000;
 
   logic [17:0]   in_mem  [BeatsIn];   // {eol, sof, d[15:0]}
-  logic [OutW:0] exp_mem [WordsOut];  // {last, data[768:0]}
+  logic [OutW:0] exp_mem [WordsOut];  // {last, data[896:0]}
   string dir;
   int unsigned width, height, tile_w, tile_h, floor_q4, min_area, stalls = 1;
   initial begin

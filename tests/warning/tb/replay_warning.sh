@@ -16,7 +16,7 @@ field() {
 }
 cfg=()
 for k in baseline_q8 focal_q4 cu_q4 cv_q4 veh_x_mm veh_y_mm veh_z_mm tunnel_half_w_mm \
-         tunnel_h_mm high_mm medium_mm near_mm min_height_mm d_limit_q4; do
+         tunnel_h_mm high_mm medium_mm near_mm min_height_mm d_limit_q4 rule spread_q4; do
   cfg+=("+$k=$(field "$k")")
 done
 mkdir -p "$work"

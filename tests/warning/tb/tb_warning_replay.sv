@@ -6,8 +6,9 @@
 
 // Run with the set's manifest.json config.cfg as plusargs: +vectors=<set folder> +baseline_q8
 // +focal_q4 +cu_q4 +cv_q4 +veh_x_mm +veh_y_mm +veh_z_mm (signed, in decimal) +tunnel_half_w_mm
-// +tunnel_h_mm +high_mm +medium_mm +near_mm +min_height_mm +d_limit_q4. Parameters:
-// config.max_disparity_px (the build), words_in, words_out (= frames: one result a frame).
+// +tunnel_h_mm +high_mm +medium_mm +near_mm +min_height_mm +d_limit_q4 +rule +spread_q4.
+// Parameters: config.max_disparity_px (the build), words_in, words_out (= frames: one result a
+// frame).
 // +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
 // another).
 module tb_warning_replay #(
@@ -15,19 +16,19 @@ module tb_warning_replay #(
   parameter int unsigned WordsIn        = 1,
   parameter int unsigned WordsOut       = 1
 );
-  localparam int unsigned InW  = 1 + 32 + 10 * 16 + 9 * 64;     // sim/labelling_pack.hpp: 769
+  localparam int unsigned InW  = scw_pkg::ObjWordBits;         // sim/labelling_pack.hpp: 897
   localparam int unsigned OutW = 2 + 5 + 3 * 16 + 32 + 7 * 16;  // sim/warning_pack.hpp: 199
-  localparam int unsigned Latency = 47;                         // hls::warning::kLatency
+  localparam int unsigned Latency = 64 + 47;  // hls::warning::kLatency (kRuleLatency + 47)
   // Generous: the stage takes a word a clock unless its result waits; the source idles 1 clock
   // in 4 and the sink 3 in 7.
   localparam longint unsigned MaxCycles = 8 * (WordsIn + WordsOut) + 8 * Latency + 1000;
 
-  logic [InW:0]  in_mem  [WordsIn];   // {last, data[768:0]}
+  logic [InW:0]  in_mem  [WordsIn];   // {last, data[InW-1:0]}
   logic [OutW:0] exp_mem [WordsOut];  // {last, data[198:0]}
   string dir;
   int unsigned stalls = 1;
   int baseline_q8, focal_q4, cu_q4, cv_q4, veh_x_mm, veh_y_mm, veh_z_mm, tunnel_half_w_mm,
-      tunnel_h_mm, high_mm, medium_mm, near_mm, min_height_mm, d_limit_q4;
+      tunnel_h_mm, high_mm, medium_mm, near_mm, min_height_mm, d_limit_q4, rule, spread_q4;
   // The cfg_* ports are static: they take their values at time 0, long before the first word.
   initial begin
     void'($value$plusargs("stalls=%d", stalls));
@@ -41,10 +42,11 @@ module tb_warning_replay #(
         !$value$plusargs("high_mm=%d", high_mm) || !$value$plusargs("medium_mm=%d", medium_mm) ||
         !$value$plusargs("near_mm=%d", near_mm) ||
         !$value$plusargs("min_height_mm=%d", min_height_mm) ||
-        !$value$plusargs("d_limit_q4=%d", d_limit_q4))
+        !$value$plusargs("d_limit_q4=%d", d_limit_q4) || !$value$plusargs("rule=%d", rule) ||
+        !$value$plusargs("spread_q4=%d", spread_q4))
       $fatal(1, "give the set's config.cfg: +baseline_q8 +focal_q4 +cu_q4 +cv_q4 +veh_x_mm ",
              "+veh_y_mm +veh_z_mm +tunnel_half_w_mm +tunnel_h_mm +high_mm +medium_mm +near_mm ",
-             "+min_height_mm +d_limit_q4");
+             "+min_height_mm +d_limit_q4 +rule +spread_q4");
     $readmemh({dir, "/in.hex"}, in_mem);
     $readmemh({dir, "/expected.hex"}, exp_mem);
   end
@@ -82,7 +84,7 @@ module tb_warning_replay #(
     .cfg_tunnel_half_w_mm_i(16'(tunnel_half_w_mm)), .cfg_tunnel_h_mm_i(16'(tunnel_h_mm)),
     .cfg_high_mm_i(16'(high_mm)), .cfg_medium_mm_i(16'(medium_mm)),
     .cfg_near_mm_i(16'(near_mm)), .cfg_min_height_mm_i(16'(min_height_mm)),
-    .cfg_d_limit_q4_i(16'(d_limit_q4)),
+    .cfg_d_limit_q4_i(16'(d_limit_q4)), .cfg_rule_i(1'(rule)), .cfg_spread_i(8'(spread_q4)),
     .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_word[InW-1:0]),
     .in_last_i(in_word[InW]),
     .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
