@@ -287,7 +287,7 @@ struct FrameOut {
 
 /// The model's second pass on the frame it has just emitted, on the vector build itself, so that
 /// in an overflow frame the image shows exactly the objects the stage reported.
-void second_pass(const Model::Kernel& k, const std::vector<std::int32_t>& node_map, FrameOut& f) {
+void second_pass(const Model::kernel_type& k, const std::vector<std::int32_t>& node_map, FrameOut& f) {
   auto n = labelling::number_objects(f.objects, node_map, kW, kH,
                                      [&k](int node) { return k.root(node); });
   f.labels = n.labels;

@@ -63,7 +63,7 @@ Segmentation segment(const cv::Mat& disp_q4, const LabellingConfig& cfg) {
   auto& k = model->kernel();
   std::vector<std::int32_t> node_map(disp_q4.total(), 0);
   k.set_node_map(&node_map);
-  while (k.phase() == Model::Kernel::kInit) model->tick();
+  while (k.phase() == Model::kernel_type::kInit) model->tick();
 
   const auto beats = frame_beats(disp_q4);
   Segmentation s;
