@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -300,14 +299,15 @@ void add_run_command(CLI::App& app) {
                   "Camera height above the road, m (the road stage's first road, ground removal's slope)")->capture_default_str();
   cmd->add_option("--min-height", o->run.warning.min_height_m,
                   "Lower objects are not obstacles (road markings), m")->capture_default_str();
-  cmd->add_option("--distance-rule", o->run.warning.distance_rule,
-                  "Which disparity places an object: spread, min(d_max, mean + k sd) of its "
-                  "disparities (default), or closest, its largest (the thesis's)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, hls::warning::DistanceRule>{
-              {"closest", hls::warning::DistanceRule::kClosest},
-              {"spread", hls::warning::DistanceRule::kSpread}},
-          CLI::ignore_case));
+  cmd->add_option_function<std::string>(
+         "--distance-rule",
+         [o](const std::string& rule) {
+           o->run.warning.distance_rule = rule == "closest" ? hls::warning::DistanceRule::kClosest
+                                                            : hls::warning::DistanceRule::kSpread;
+         },
+         "Which disparity places an object: spread, min(d_max, mean + k sd) of its disparities "
+         "(default), or closest, its largest (the thesis's)")
+      ->check(CLI::IsMember({"spread", "closest"}));
   cmd->add_option("--spread-k", o->run.warning.spread_k,
                   "k of the spread rule, 0 .. 15.9375 (steps of 1/16)")
       ->capture_default_str()
