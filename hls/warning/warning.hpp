@@ -127,4 +127,27 @@ class Warning {
   out_type out_{};
 };
 
+// The loop label names the loop in HLS reports; g++ would call it unused.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-label"
+/// Object tables through the stage with no stalls: `n` words from `in` (one or more frames, each
+/// closed by its status word with `last`), one result per frame to `out`, in order; returns how
+/// many. The loop runs kLatency clocks past the last word so the last result leaves. What an HLS
+/// tool synthesises as the stage's top; `out` needs room for one result per frame (at most n).
+template <typename Params>
+int warning_frame(Warning<Params>& w, const labelling::LabelPacket* in, int n, ResultPacket* out) {
+  int results = 0;
+loop_word:
+  for (int i = 0; i < n + kLatency; ++i) {
+    // clang-format off
+#pragma HLS PIPELINE II=1
+    // clang-format on
+    const bool valid = i < n;
+    w.clock(valid, valid ? in[i] : labelling::LabelPacket{}, true);
+    if (w.out_valid()) out[results++] = w.out();
+  }
+  return results;
+}
+#pragma GCC diagnostic pop
+
 }  // namespace scw::hls::warning

@@ -79,6 +79,33 @@ TEST_CASE("warning model: frame results equal a plain fold of evaluate() under e
   }
 }
 
+TEST_CASE("the frame function (the HLS top) equals the cycle model", "[hls]") {
+  const auto setup = scw::fixtures::thesis_setup();
+  const auto cfg = scw::host::warning::to_fixed(setup);
+  std::mt19937 rng(77);
+  std::vector<LabelPacket> words;
+  std::vector<FrameResult> expected;
+  for (int f = 0; f < 12; ++f) {
+    const auto t = random_table(rng, setup, f % 5 == 0 ? 0 : 1 + static_cast<int>(rng() % 20),
+                                1280, 480);
+    const auto w = scw::warning::table_words(t, ok_status(t.size()));
+    words.insert(words.end(), w.begin(), w.end());
+    expected.push_back(fold_table<Params>(t, cfg));
+  }
+  scw::hls::warning::Warning<Params> k(cfg);
+  std::vector<scw::hls::warning::ResultPacket> out(words.size());
+  const int n = scw::hls::warning::warning_frame(k, words.data(), static_cast<int>(words.size()),
+                                                 out.data());
+  REQUIRE(n == static_cast<int>(expected.size()));
+  std::vector<FrameResult> got;
+  for (int i = 0; i < n; ++i) {
+    CHECK(out[static_cast<std::size_t>(i)].last);
+    got.push_back(out[static_cast<std::size_t>(i)].data);
+  }
+  CHECK(got == expected);
+  CHECK(got == run_frames(words, cfg, StallPattern{}, expected.size()));
+}
+
 TEST_CASE("warning model: the result shows kLatency clocks after the status word is taken",
           "[hls]") {
   const auto setup = scw::fixtures::thesis_setup();
