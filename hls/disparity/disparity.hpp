@@ -315,4 +315,33 @@ class Disparity {
   in_type held_l_{}, held_r_{};
 };
 
+// The loop label names the loop in HLS reports; g++ would call it unused.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-label"
+/// Whole frames of beat pairs through the stage with no output stalls: `n` beats from `l` and `r`
+/// (frames of the configured size, back to back), `n` disparity beats to `out`; returns how many
+/// were written (n, unless the input breaks the frame geometry and `max_clocks` runs out first).
+/// The loop is one clock of the stage an iteration: it takes the next pair when the stage is
+/// ready (always, for well-formed frames with the output never stalled) and writes a beat when
+/// one leaves. What an HLS tool synthesises as the stage's top.
+template <typename Params>
+int disparity_frame(Disparity<Params>& d, const typename Params::pixel_beat* l,
+                    const typename Params::pixel_beat* r, typename Params::disp_beat* out, int n,
+                    long max_clocks) {
+  int taken = 0, written = 0;
+loop_clock:
+  for (long c = 0; c < max_clocks && written < n; ++c) {
+    // clang-format off
+#pragma HLS PIPELINE II=1
+    // clang-format on
+    const bool take = taken < n && d.in_ready(true, true);
+    const auto e = d.clock(take, take ? l[taken] : typename Params::pixel_beat{},
+                           take ? r[taken] : typename Params::pixel_beat{}, true);
+    if (take) ++taken;
+    if (e.valid) out[written++] = e.beat;
+  }
+  return written;
+}
+#pragma GCC diagnostic pop
+
 }  // namespace scw::hls::disparity

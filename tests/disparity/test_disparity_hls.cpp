@@ -171,3 +171,33 @@ TEST_CASE("disparity runs one beat per clock across frames", "[disparity][hls][c
     }
   }
 }
+
+namespace {
+
+/// The frame function (the stage's HLS top) over `frames` back to back against the clocked
+/// model's output under no stalls.
+template <typename Params>
+void check_frame_function(const std::vector<Pair>& frames, int w, int h,
+                          const DisparityConfig& cfg) {
+  const auto s = test::stereo_streams<typename Params::pixel_beat>(frames, w, h);
+  auto model = std::make_unique<sim::DisparityModel<Params>>(cfg);
+  const auto run = sim::run_join(*model, s.left, s.right, {}, s.left.size(), 100'000'000);
+  REQUIRE_FALSE(run.timed_out);
+  auto k = std::make_unique<hls::disparity::Disparity<Params>>(cfg);
+  const int n = static_cast<int>(s.left.size());
+  std::vector<typename Params::disp_beat> out(s.left.size());
+  CHECK(hls::disparity::disparity_frame(*k, s.left.data(), s.right.data(), out.data(), n,
+                                        100'000'000) == n);
+  CHECK(out == run.out);
+  CHECK_FALSE(k->error());
+}
+
+}  // namespace
+
+TEST_CASE("the frame function (the HLS top) equals the clocked model", "[disparity][hls]") {
+  check_frame_function<hls::disparity::DisparityParams<1, 64, 5, 16>>(
+      {random_pair(64, 25, 0, 16, 21), random_pair(64, 25, 0, 16, 22)}, 64, 25,
+      hls::disparity::opencv_mode(64, 25, 0));
+  check_frame_function<hls::disparity::DisparityParams<2, 96, 9, 16>>(
+      {random_pair(96, 32, 4, 16, 23)}, 96, 32, DisparityConfig{96, 32, 4});
+}
