@@ -556,4 +556,35 @@ class Labelling {
   out_type out_;
 };
 
+// The loop label names the loop in HLS reports; g++ would call it unused.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-label"
+/// Frames of beats through the stage with no output stalls: `n` beats from `in` (`frames` whole
+/// frames back to back), every object and status word to `out` (room for `max_out`), in order;
+/// returns how many words were written. The loop is one clock of the stage an iteration: it offers
+/// the next beat, which the stage takes when it is ready (in its frame phase, with room in the
+/// lane), and writes each word as it leaves, until `frames` status words have left or
+/// `max_clocks` run out. What an HLS tool synthesises as the stage's top.
+template <typename Params>
+int labelling_frame(Labelling<Params>& k, const typename Params::in_beat* in, int n,
+                    LabelPacket* out, int max_out, int frames, long max_clocks) {
+  int taken = 0, written = 0, closed = 0;
+loop_clock:
+  for (long c = 0; c < max_clocks && closed < frames && written < max_out; ++c) {
+    // clang-format off
+#pragma HLS PIPELINE II=1
+    // clang-format on
+    const bool valid = taken < n;
+    const typename Params::in_beat beat = valid ? in[taken] : typename Params::in_beat{};
+    if (valid && k.in_ready(beat.sof)) ++taken;
+    k.clock(valid, beat, true);
+    if (k.out_valid()) {
+      out[written++] = k.out();
+      closed += k.out().data.is_status ? 1 : 0;
+    }
+  }
+  return written;
+}
+#pragma GCC diagnostic pop
+
 }  // namespace scw::hls::labelling

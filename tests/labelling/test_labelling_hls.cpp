@@ -247,3 +247,21 @@ TEST_CASE("labelling: the stored widths hold a full 1280 x 480 frame, and need e
   REQUIRE(frames[0].objects.size() == 1);
   CHECK(frames[0].objects[0] == all);
 }
+
+TEST_CASE("the frame function (the HLS top) equals the clocked model", "[hls]") {
+  const std::vector<DispMap> maps{random_map(64, 48, 0.6, 5), spiral_map(64, 48),
+                                  random_map(64, 48, 0.3, 6)};
+  const auto cfg = grid_config(64, 48, 3, 5, 0, 1);
+  auto m = std::make_unique<scw::sim::LabellingModel<Big>>(cfg);
+  const auto r = run_maps(*m, maps, cfg, {});
+  REQUIRE_FALSE(r.timed_out);
+  const auto beats = map_beats<Big::in_beat>(maps);
+  auto k = std::make_unique<scw::hls::labelling::Labelling<Big>>(cfg);
+  std::vector<scw::hls::labelling::LabelPacket> out(r.out.size() + 8);
+  const int written = scw::hls::labelling::labelling_frame(
+      *k, beats.data(), static_cast<int>(beats.size()), out.data(), static_cast<int>(out.size()),
+      static_cast<int>(maps.size()), 4'000'000);
+  out.resize(static_cast<std::size_t>(written));
+  CHECK(out == r.out);
+  check_against_reference(split_frames(out), maps, cfg);
+}
