@@ -228,4 +228,40 @@ class Rectify {
   map_type held_map_{};
 };
 
+// The loop label names the loop in HLS reports; g++ would call it unused.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-label"
+/// Frames through the stage with no output stalls: `n` raw beats and `n` map beats (whole frames
+/// of the configured size, back to back), `n` rectified beats to `out`; returns how many were
+/// written (n, unless the input breaks the frame geometry and `max_clocks` runs out first). The
+/// loop is one clock of the stage an iteration: each port takes its next beat when the stage is
+/// ready for it, and every beat the reader forms is written. With the output never stalled, the
+/// writer's look at the pipeline (`pending`) is whether the last beat formed closed a row. What an
+/// HLS tool synthesises as the stage's top.
+template <typename Params>
+int rectify_frame(Rectify<Params>& k, const typename Rectify<Params>::raw_type* raw,
+                  const typename Rectify<Params>::map_type* map,
+                  typename Rectify<Params>::out_type* out, int n, long max_clocks) {
+  using Kernel = Rectify<Params>;
+  int raw_taken = 0, map_taken = 0, written = 0;
+  bool pending = false;
+loop_clock:
+  for (long c = 0; c < max_clocks && written < n; ++c) {
+    // clang-format off
+#pragma HLS PIPELINE II=1
+    // clang-format on
+    const bool raw_take = raw_taken < n && k.raw_ready(pending);
+    const bool map_take = map_taken < n && k.map_ready(true);
+    const auto e = k.clock(pending, raw_take,
+                           raw_take ? raw[raw_taken] : typename Kernel::raw_type{}, true, map_take,
+                           map_take ? map[map_taken] : typename Kernel::map_type{});
+    raw_taken += raw_take ? 1 : 0;
+    map_taken += map_take ? 1 : 0;
+    pending = e.valid && e.beat.eol;
+    if (e.valid) out[written++] = e.beat;
+  }
+  return written;
+}
+#pragma GCC diagnostic pop
+
 }  // namespace scw::hls::rectify
