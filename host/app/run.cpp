@@ -199,8 +199,11 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
   classify_and_track(out, wcfg);
   auto deciding = host::warning::overlay_object(out.result, wsetup);
   if (deciding && out.deciding_label > 0) {
+    const ObjectReport& dec = out.objects[static_cast<std::size_t>(out.deciding_label - 1)];
+    // The cuboid's front face at the depth the stage placed the object (its distance rule's).
+    deciding->z_m = dec.eval.z_mm / 1000.0;
     // The cuboid bounds the whole target the deciding part belongs to.
-    const int t = out.objects[static_cast<std::size_t>(out.deciding_label - 1)].target;
+    const int t = dec.target;
     if (t >= 0) {
       const auto& o = out.targets[static_cast<std::size_t>(t)].object;
       deciding->u0 = o.x_min;

@@ -18,7 +18,8 @@ namespace scw::host::warning {
 struct OverlayObject {
   // Bounding box, inclusive pixels: the object's x_min, y_min, x_max, y_max.
   int u0 = 0, v0 = 0, u1 = 0, v1 = 0;
-  double z_m = 0.0;         // depth (camera z) of its closest point: the cuboid's front face
+  double z_m = 0.0;         // depth (camera z) of its front face: from the result's d_max here;
+                            // scw run sets the distance rule's depth from the object's evaluation
   double distance_m = 0.0;  // from the bumper; an upper bound when too_close
   hls::warning::Severity severity = hls::warning::Severity::kNone;
   bool too_close = false;  // closer than the disparity search range measures
