@@ -90,18 +90,6 @@ constexpr std::uint32_t recip(std::uint32_t dq) {
   return static_cast<std::uint32_t>(((std::uint64_t{1} << 32) + dq / 2) / dq);
 }
 
-/// floor(sqrt(n) + 1/2) for n < 2^52: what the RTL's bit-serial square root and its rounding
-/// step give.
-constexpr std::uint32_t isqrt_round(std::uint64_t n) {
-  std::uint64_t r = 0;
-  for (int b = 26; b >= 0; --b) {
-    const std::uint64_t t = r | (std::uint64_t{1} << b);
-    if (t * t <= n) r = t;
-  }
-  if (n - r * r > r) ++r;  // n >= (r + 1/2)^2 = r^2 + r + 1/4  <=>  n - r^2 > r
-  return static_cast<std::uint32_t>(r);
-}
-
 /// floor(sqrt(n) + 1/2) for n < 2^(2 root_bits), trying root bits root_bits - 1 .. 0 (the RTL's
 /// bit-serial square root, scw_warning_sqrt, with RootW = root_bits).
 constexpr std::uint64_t isqrt_round_wide(labelling::u128 n, int root_bits) {
@@ -110,8 +98,14 @@ constexpr std::uint64_t isqrt_round_wide(labelling::u128 n, int root_bits) {
     const std::uint64_t t = r | (std::uint64_t{1} << b);
     if (static_cast<labelling::u128>(t) * t <= n) r = t;
   }
-  if (n - static_cast<labelling::u128>(r) * r > r) ++r;
+  if (n - static_cast<labelling::u128>(r) * r > r) ++r;  // n >= (r + 1/2)^2 <=> n - r^2 > r
   return r;
+}
+
+/// floor(sqrt(n) + 1/2) for n < 2^52: what the RTL's bit-serial square root and its rounding
+/// step give for the distance (27 root bits).
+constexpr std::uint32_t isqrt_round(std::uint64_t n) {
+  return static_cast<std::uint32_t>(isqrt_round_wide(n, 27));
 }
 
 /// The disparity (Q11.4 code) that places object `o` under `c.rule`. kSpread, exactly as

@@ -47,6 +47,27 @@ std::vector<FrameResult> run_frames(const std::vector<LabelPacket>& words,
   return out;
 }
 
+/// `frames` random object tables back to back (every `empty_every`-th empty, the others of 1 ..
+/// `max_objects` objects on a `width` x 480 image): their words, and each frame's result by a
+/// plain fold of evaluate().
+struct Frames {
+  std::vector<LabelPacket> words;
+  std::vector<FrameResult> expected;
+};
+Frames random_frames(std::mt19937& rng, const scw::host::warning::WarningSetup& setup,
+                     const scw::hls::warning::WarningConfig& cfg, int frames, int empty_every,
+                     int max_objects, int width) {
+  Frames out;
+  for (int f = 0; f < frames; ++f) {
+    const int n = f % empty_every == 0 ? 0 : 1 + static_cast<int>(rng() % max_objects);
+    const auto t = random_table(rng, setup, n, width, 480);
+    const auto w = scw::warning::table_words(t, ok_status(t.size()));
+    out.words.insert(out.words.end(), w.begin(), w.end());
+    out.expected.push_back(fold_table<Params>(t, cfg));
+  }
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("warning model: frame results equal a plain fold of evaluate() under every stall",
@@ -54,15 +75,7 @@ TEST_CASE("warning model: frame results equal a plain fold of evaluate() under e
   for (const auto& setup : {scw::fixtures::karlsruhe_setup(), scw::fixtures::thesis_setup()}) {
     const auto cfg = scw::host::warning::to_fixed(setup);
     std::mt19937 rng(1234);
-    std::vector<LabelPacket> words;
-    std::vector<FrameResult> expected;
-    for (int f = 0; f < 40; ++f) {
-      const auto t = random_table(rng, setup, f % 7 == 0 ? 0 : 1 + static_cast<int>(rng() % 30),
-                                  1344, 480);
-      const auto w = scw::warning::table_words(t, ok_status(t.size()));
-      words.insert(words.end(), w.begin(), w.end());
-      expected.push_back(fold_table<Params>(t, cfg));
-    }
+    const auto [words, expected] = random_frames(rng, setup, cfg, 40, 7, 30, 1344);
     int severities[4] = {0, 0, 0, 0};
     for (const auto& e : expected) ++severities[static_cast<int>(e.severity)];
     INFO("frames by severity none/low/medium/high: " << severities[0] << "/" << severities[1]
@@ -83,15 +96,7 @@ TEST_CASE("the frame function (the HLS top) equals the cycle model", "[hls]") {
   const auto setup = scw::fixtures::thesis_setup();
   const auto cfg = scw::host::warning::to_fixed(setup);
   std::mt19937 rng(77);
-  std::vector<LabelPacket> words;
-  std::vector<FrameResult> expected;
-  for (int f = 0; f < 12; ++f) {
-    const auto t = random_table(rng, setup, f % 5 == 0 ? 0 : 1 + static_cast<int>(rng() % 20),
-                                1280, 480);
-    const auto w = scw::warning::table_words(t, ok_status(t.size()));
-    words.insert(words.end(), w.begin(), w.end());
-    expected.push_back(fold_table<Params>(t, cfg));
-  }
+  const auto [words, expected] = random_frames(rng, setup, cfg, 12, 5, 20, 1280);
   scw::hls::warning::Warning<Params> k(cfg);
   std::vector<scw::hls::warning::ResultPacket> out(words.size());
   const int n = scw::hls::warning::warning_frame(k, words.data(), static_cast<int>(words.size()),
