@@ -151,7 +151,8 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
         const double cv = opt_.warning.cv_px != 0.0 ? opt_.warning.cv_px
                                                     : 0.5 * (out.disparity.rows - 1);
         road_ = std::make_unique<road::RoadFilter>(road::to_fixed(road::rig_setup(
-            opt_.warning.baseline_m, opt_.warning.focal_px, cv, opt_.camera_height_m)));
+            opt_.warning.baseline_m, opt_.warning.focal_px, cv, opt_.camera_height_m,
+            opt_.camera_pitch_deg)));
       }
       const cv::Mat before = out.disparity;
       out.disparity = road_->filter(before);

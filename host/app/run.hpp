@@ -36,6 +36,7 @@ struct RunOptions {
   bool road = true;     // the road stage (docs/road.md) between disparity and labelling
   bool ground = false;  // thesis 6.2 ground-plane removal after it
   double camera_height_m = 1.2;  // the road stage's nominal road, the ground filter's slope
+  double camera_pitch_deg = 0.0;  // the road stage's nominal horizon (down is positive)
   host::warning::WarningSetup warning;  // camera, car, thresholds (principal point, limit set
                                         // by the runner from the images and max_disp)
   std::string classifier;  // model file from `scw train`; empty: the parallelepiped classifier

@@ -297,6 +297,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--ground", o->run.ground, "Ground-plane removal (thesis 6.2) before labelling");
   cmd->add_option("--camera-height", o->run.camera_height_m,
                   "Camera height above the road, m (the road stage's first road, ground removal's slope)")->capture_default_str();
+  cmd->add_option("--camera-pitch", o->run.camera_pitch_deg,
+                  "Camera's downward pitch, degrees (the road stage's first horizon; the road "
+                  "it fits replaces it)")->capture_default_str();
   cmd->add_option("--min-height", o->run.warning.min_height_m,
                   "Lower objects are not obstacles (road markings), m")->capture_default_str();
   cmd->add_option_function<std::string>(

@@ -36,7 +36,7 @@ ReferenceFrame reference_frame(const cv::Mat& left, const cv::Mat& right, int wi
   if (opt.road) {
     const auto w_setup = warning_setup(w, h, opt);
     auto rsetup = road::rig_setup(w_setup.baseline_m, w_setup.focal_px, w_setup.cv_px,
-                                  opt.camera_height_m);
+                                  opt.camera_height_m, opt.camera_pitch_deg);
     rsetup.min_count = opt.road_min_count;
     const auto rcfg = road::to_fixed(rsetup);
     f.road = reference::to_px(rcfg.nominal);

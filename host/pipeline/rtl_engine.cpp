@@ -48,6 +48,7 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
   so.warning = o.warning;
   so.road = o.road;
   so.camera_height_m = o.camera_height_m;
+  so.camera_pitch_deg = o.camera_pitch_deg;
   std::vector<hls::rectify::KnotPoint> left, right;
   int lead = 1;
   if (knot_source) {

@@ -49,7 +49,8 @@ sim::PipelineSetup make_setup(int width, int height, int grid_log2, const StageO
   const auto w = warning_setup(width, height, opt);
   s.warning = host::warning::to_fixed(w);
   if (opt.road) {
-    auto r = road::rig_setup(w.baseline_m, w.focal_px, w.cv_px, opt.camera_height_m);
+    auto r = road::rig_setup(w.baseline_m, w.focal_px, w.cv_px, opt.camera_height_m,
+                             opt.camera_pitch_deg);
     r.min_count = opt.road_min_count;
     s.road = road::to_fixed(r);
   } else {

@@ -27,6 +27,7 @@ struct StageOptions {
   host::warning::WarningSetup warning;  // principal point and d_limit are set from the frame
   bool road = true;              // the road stage removes the road (off: it passes everything)
   double camera_height_m = 1.2;  // the road stage's nominal road
+  double camera_pitch_deg = 0.0;  //   and its horizon (down is positive)
   int road_min_count = road::RoadSetup{}.min_count;  // pixels the road stage's fit needs
 };
 

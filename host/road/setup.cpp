@@ -33,12 +33,14 @@ std::uint8_t q8(double rel, const char* name) {
 
 }  // namespace
 
-RoadSetup rig_setup(double baseline_m, double focal_px, double cv_px, double camera_height_m) {
+RoadSetup rig_setup(double baseline_m, double focal_px, double cv_px, double camera_height_m,
+                    double camera_pitch_deg) {
   RoadSetup s;
   s.baseline_m = baseline_m;
   s.focal_px = focal_px;
   s.cv_px = cv_px;
   s.camera_height_m = camera_height_m;
+  s.camera_pitch_deg = camera_pitch_deg;
   return s;
 }
 
@@ -50,15 +52,24 @@ RoadConfig to_fixed(const RoadSetup& s) {
   if (!(s.height_ratio >= 1.0))
     throw std::invalid_argument("road: height ratio " + std::to_string(s.height_ratio) +
                                 " must be at least 1");
-  // The flat road seen by a level camera at height H: d(v) = (b / H) (v - cv) px.
+  if (!(std::abs(s.camera_pitch_deg) <= s.max_pitch_deg))
+    throw std::invalid_argument("road: camera pitch " + std::to_string(s.camera_pitch_deg) +
+                                " degrees outside the plausible +-" +
+                                std::to_string(s.max_pitch_deg) + " (down is positive)");
+  // The flat road seen by a camera at height H pitched down by t: d(v) = (b cos t / H)
+  // (v - cv + f tan t) px; the plausible slopes stay about the level camera's b / H.
+  constexpr double kRad = 3.14159265358979323846 / 180.0;
   const double slope = s.baseline_m / s.camera_height_m;
+  const double pitch = s.camera_pitch_deg * kRad;
+  const double nominal = slope * std::cos(pitch);
   RoadConfig c;
   c.enable = s.enable;
-  c.nominal.a = static_cast<std::int32_t>(std::lround(slope * kUnit));
-  c.nominal.b = static_cast<std::int32_t>(std::lround(-slope * s.cv_px * kUnit));
+  c.nominal.a = static_cast<std::int32_t>(std::lround(nominal * kUnit));
+  c.nominal.b = static_cast<std::int32_t>(
+      std::lround(-nominal * (s.cv_px - s.focal_px * std::tan(pitch)) * kUnit));
   c.a_min = static_cast<std::int32_t>(std::lround(slope / s.height_ratio * kUnit));
   c.a_max = static_cast<std::int32_t>(std::lround(slope * s.height_ratio * kUnit));
-  const double shift = s.focal_px * std::tan(s.max_pitch_deg * 3.14159265358979323846 / 180.0);
+  const double shift = s.focal_px * std::tan(s.max_pitch_deg * kRad);
   c.h_min = static_cast<std::uint16_t>(std::max(0.0, std::floor(s.cv_px - shift)));
   c.h_max = static_cast<std::uint16_t>(std::min(1023.0, std::ceil(s.cv_px + shift)));
   c.tol_q4 = q4(s.tol_px, "tolerance");

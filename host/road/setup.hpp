@@ -13,6 +13,7 @@ using hls::road::RoadConfig;
 struct RoadSetup {
   double baseline_m = 0.54;
   double camera_height_m = 1.20;  // nominal: frame 0's road, and the plausible range about it
+  double camera_pitch_deg = 0.0;  // nominal: the camera's downward pitch, frame 0's horizon
   double cv_px = 0.0;             // the rectified principal point's row
   double focal_px = 0.0;
   double height_ratio = 2.0;      // a fitted road is plausible for a camera height within
@@ -25,8 +26,9 @@ struct RoadSetup {
 };
 
 /// The defaults for a rig: its baseline, focal length and principal point row, the camera's
-/// nominal height.
-RoadSetup rig_setup(double baseline_m, double focal_px, double cv_px, double camera_height_m);
+/// nominal height and downward pitch (degrees).
+RoadSetup rig_setup(double baseline_m, double focal_px, double cv_px, double camera_height_m,
+                    double camera_pitch_deg = 0.0);
 
 /// The fixed-point configuration; throws std::invalid_argument naming a value that is not
 /// positive or does not fit the ports.

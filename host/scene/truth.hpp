@@ -28,7 +28,7 @@ struct ObjectTruth {
   bool in_tunnel = false;     // the box's x and y intervals overlap the tunnel's cross-section
   double gap_m = 0.0;         // how far the box lies outside the cross-section; 0 inside
   bool obstacle = false;      // at least min_height_m high
-  bool in_view = false;       // some of the box is in front of the left camera and in its image
+  bool in_view = false;       // some point of the box is in both cameras' images
   Severity severity = Severity::kNone;  // eq. 5.2; kNone when not an obstacle
 };
 
@@ -48,9 +48,9 @@ using hls::warning::severity_name;  // the names `scw run` writes
 /// Eq. 5.2 as the floating-point warning reference judges it (host/warning/reference.hpp).
 using host::warning::judge_severity;
 
-/// Whether some of the box is in the left image: all of it in front of the camera and its
-/// corners' projection (with distortion) overlapping the image, or the box reaching across the
-/// camera's plane (beside the car).
+/// Whether stereo can see some of the box: all of it in front of the left camera and a point of
+/// it (on a grid of the box) in both images, with distortion; or the box reaching across the
+/// camera's plane (beside the car). A point only one camera sees has no disparity.
 bool in_view(const SceneObject& o, const StereoRig& rig);
 
 /// The truth of one object; the tunnel and thresholds are `w`'s (default: WarningSetup's).

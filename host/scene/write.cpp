@@ -135,7 +135,9 @@ std::string run_command(const std::string& dir, const std::string& out_dir,
      << " --sequence " << shell_word(dir) << " --min-disp " << run.min_disp << " --max-disp "
      << run.max_disp << " --window " << run.window << " --tiles " << run.tiles_x << "x"
      << run.tiles_y << (run.ground ? " --ground" : "") << " --camera-height "
-     << number(run.camera_height_m) << " --frame-period " << number(frame_period_s)
+     << number(run.camera_height_m);
+  if (run.camera_pitch_deg != 0.0) os << " --camera-pitch " << number(run.camera_pitch_deg);
+  os << " --frame-period " << number(frame_period_s)
      << " --out-dir " << shell_word(out_dir);
   return os.str();
 }
@@ -168,7 +170,8 @@ nlohmann::json scene_json(const Sequence& s, const StereoRig& rig, int subsample
             {"window", run.window},
             {"tiles", std::to_string(run.tiles_x) + "x" + std::to_string(run.tiles_y)},
             {"ground", run.ground},
-            {"camera_height_m", run.camera_height_m}}},
+            {"camera_height_m", run.camera_height_m},
+            {"camera_pitch_deg", run.camera_pitch_deg}}},
           {"command", run_command(dir, out_dir, run, s.frame_period_s)},
           {"eval_command", eval_command(dir, out_dir)}};
 }
@@ -209,6 +212,7 @@ WrittenScene write_scene(const Sequence& s, const Renderer& renderer, const std:
   const StereoRig& rig = renderer.rig();
   RunSettings run;
   run.camera_height_m = rig.camera_in_vehicle_m[1];
+  run.camera_pitch_deg = rig.pitch_rad * 180.0 / 3.14159265358979323846;
 
   std::ofstream truth(d / "truth.jsonl");
   if (!truth) throw std::runtime_error("cannot write '" + (d / "truth.jsonl").string() + "'");

@@ -38,6 +38,7 @@ struct RunSettings {
   int tiles_x = 8, tiles_y = 4;
   bool ground = false;
   double camera_height_m = default_camera_in_vehicle()[1];
+  double camera_pitch_deg = 0.0;  // the rig's mounting pitch (the road stage's first horizon)
 };
 
 /// The full `scw run` command line for the scene in `dir`, results to `out_dir`.

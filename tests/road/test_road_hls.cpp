@@ -204,6 +204,15 @@ TEST_CASE("road: configuration values out of range are named", "[hls][road]") {
   const auto f = scw::road::to_fixed(scw::road::rig_setup(0.54, 700, 240, 1.2));
   CHECK(f.nominal.a == std::lround(0.45 * kUnit));
   CHECK(-f.nominal.b / double(f.nominal.a) == Approx(240).margin(0.01));
+  // A camera pitched 1 degree down: the horizon f tan(1 deg) = 12.2 rows above the principal
+  // point, the slope b cos(1 deg) / H; the plausible range stays about the level camera's.
+  const auto p = scw::road::to_fixed(scw::road::rig_setup(0.54, 700, 240, 1.2, 1.0));
+  CHECK(-p.nominal.b / double(p.nominal.a) == Approx(240 - 700 * std::tan(0.01745329)).margin(0.01));
+  CHECK(p.nominal.a == std::lround(0.45 * std::cos(0.01745329) * kUnit));
+  CHECK(p.a_min == f.a_min);
+  CHECK(p.h_max == f.h_max);
+  CHECK_THROWS_WITH(scw::road::to_fixed(scw::road::rig_setup(0.54, 700, 240, 1.2, -3.5)),
+                    Catch::Contains("camera pitch -3.5"));
   scw::road::RoadFilter k(f);
   CHECK_THROWS_WITH(k.filter(cv::Mat(4, 4, CV_8UC1)), Catch::Contains("16-bit"));
 }

@@ -261,6 +261,23 @@ TEST_CASE("truth: the severity follows eq. 5.2 with WarningSetup's tunnel", "[sc
   CHECK(std::string(severity_name(Severity::kMedium)) == "medium");
 }
 
+TEST_CASE("truth: in view means both cameras see some of the box", "[scene]") {
+  const StereoRig rig;
+  // A cyclist's box at the left edge, 8 m ahead (cyclist-crossing, frame 8): its near right
+  // edge is inside the left image, but 0.3 m further right the right camera sees it 40 px
+  // further left, past its edge. Stereo cannot measure it, so it is not in view.
+  SceneObject edge = box(1, -5.9, 1.8, 8.0);
+  const cv::Vec3d corner = rig.vehicle_to_left({-4.1, 1.2, 8.0});
+  const double u_left = rig.left.fx * corner[0] / corner[2] + rig.left.cx;
+  REQUIRE(u_left >= 0.0);  // the left camera alone sees it
+  const cv::Vec3d in_right = rig.rotation() * corner + rig.translation_m;
+  REQUIRE(rig.right.fx * in_right[0] / in_right[2] + rig.right.cx < -20.0);
+  CHECK_FALSE(object_truth(edge, rig).in_view);
+  // A metre further right both cameras see its right edge.
+  edge = box(1, -4.9, 1.8, 8.0);
+  CHECK(object_truth(edge, rig).in_view);
+}
+
 TEST_CASE("presets: they re-enact the thesis's experiments", "[scene]") {
   const StereoRig rig;
   CHECK(preset_names() == std::vector<std::string>{"distance-sweep", "cyclist-crossing",
