@@ -19,6 +19,7 @@
 #include "hls/common/line_buffer.hpp"
 #include "host/cli/commands.hpp"
 #include "host/io/image_file.hpp"
+#include "host/pipeline/thesis_figures.hpp"
 #include "host/reference/line_buffer_ref.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/components.hpp"
@@ -32,7 +33,7 @@ namespace {
 
 constexpr int kMaxWidthPx = 1280;  // the thesis camera's row
 constexpr int kRows = 3;
-constexpr double kClockMhz = 125.0;  // the thesis FPGA's clock
+using host::pipeline::thesis::kClockMhz;
 template <int P>
 using DemoParams = hls::LineBufferParams<P, kMaxWidthPx, kRows>;
 

@@ -14,3 +14,19 @@ target_link_libraries(test_pipeline_run PRIVATE scw_test_main scw::host scw_rtl_
 target_compile_definitions(test_pipeline_run PRIVATE SCW_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
 scw_warnings(test_pipeline_run)
 catch_discover_tests(test_pipeline_run TEST_PREFIX "pipeline:")
+
+# `scw sim` end to end: the small build all RTL under random stalls, the floating-point chain
+# beside it, the JSON report; and a bad option named.
+add_test(NAME "pipeline:cli sim runs the small build in RTL, agrees with the reference, writes JSON"
+         COMMAND bash -c "rm -f cli_sim.json && '$<TARGET_FILE:scw>' sim --config small \
+                          --frames 2 --engine rtl --stalls random:3 --reference \
+                          --json cli_sim.json > cli_sim.txt 2> cli_sim.err && \
+                          grep -q 'frame period T_P' cli_sim.txt && \
+                          grep -q ': agrees with the pipeline' cli_sim.txt && \
+                          grep -q '\"agrees\": true' cli_sim.json && \
+                          grep -q '\"period_cycles\"' cli_sim.json"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+add_test(NAME "pipeline:cli sim refuses an unknown configuration and names the two"
+         COMMAND bash -c "! '$<TARGET_FILE:scw>' sim --config big 2> cli_sim_bad.err && \
+                          grep -q 'use thesis (1280 x 480' cli_sim_bad.err"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
