@@ -8,7 +8,6 @@
 #include <iostream>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -90,18 +89,6 @@ Input read_disparity(const Options& o) {
                            "-bit values; " + kSupported);
 }
 
-std::pair<int, int> parse_tiles(const std::string& text) {
-  static const std::regex form("([1-9][0-9]{0,3})x([1-9][0-9]{0,3})");
-  std::smatch m;
-  if (!std::regex_match(text, m, form))
-    throw std::runtime_error("--tiles '" + text +
-                             "' is not of the form CxR: tile columns x tile rows, such as 4x2 "
-                             "(1x1 to " +
-                             std::to_string(labelling::kHostMaxTiles) + "x" +
-                             std::to_string(labelling::kHostMaxTiles) + ")");
-  return {std::stoi(m[1].str()), std::stoi(m[2].str())};
-}
-
 /// A Q11.4 value as disparity in pixels, exactly (at most 4 decimals).
 std::string px(int q4) {
   std::string s = std::to_string(q4 / 16);
@@ -169,7 +156,7 @@ std::string status_text(const labelling::FrameStatus& s) {
 }
 
 void run(const Options& o) {
-  const auto [tiles_x, tiles_y] = parse_tiles(o.tiles);
+  const auto [tiles_x, tiles_y] = labelling::parse_tiles(o.tiles);
   if (!(o.floor >= 0.0) || o.floor * 16.0 > 32767.0)
     throw std::runtime_error("--floor " + std::to_string(o.floor) +
                              " is outside 0 .. 2047 px of disparity");

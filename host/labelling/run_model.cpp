@@ -3,6 +3,7 @@
 #include "host/labelling/run_model.hpp"
 
 #include <memory>
+#include <regex>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +33,18 @@ std::vector<HostParams::in_beat> frame_beats(const cv::Mat& d) {
 }
 
 }  // namespace
+
+std::pair<int, int> parse_tiles(const std::string& text) {
+  static const std::regex form("([1-9][0-9]{0,3})x([1-9][0-9]{0,3})");
+  std::smatch m;
+  if (!std::regex_match(text, m, form))
+    throw std::runtime_error("--tiles '" + text +
+                             "' is not of the form CxR: tile columns x tile rows, such as 4x2 "
+                             "(1x1 to " +
+                             std::to_string(kHostMaxTiles) + "x" + std::to_string(kHostMaxTiles) +
+                             ")");
+  return {std::stoi(m[1].str()), std::stoi(m[2].str())};
+}
 
 LabellingConfig grid_config(int width, int height, int tiles_x, int tiles_y, int floor,
                             int min_area) {

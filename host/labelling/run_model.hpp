@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "hls/labelling/labelling_params.hpp"
@@ -34,6 +36,10 @@ struct Segmentation {
   std::vector<Object> objects_by_label;
   std::int64_t cycles = 0;  // clock cycles the frame took, reset to status word
 };
+
+/// A tile grid given as "CxR" (tile columns x tile rows, such as 4x2): {C, R}. Throws
+/// std::runtime_error quoting `text` and the form when it is not one.
+std::pair<int, int> parse_tiles(const std::string& text);
 
 /// Tiles of ceil(width / tiles_x) x ceil(height / tiles_y) pixels for a grid of at most
 /// tiles_x x tiles_y tiles.
