@@ -12,7 +12,10 @@
 # between this call and the C++ fails the build rather than the test. NO_TRACE leaves out the
 # FST tracing code (the largest generated files): for whole-pipeline builds whose compile time
 # matters more than waveforms (sim::Harness then ignores SCW_FST_DIR for them).
-set(SCW_RTL_DIR "${CMAKE_CURRENT_LIST_DIR}/../rtl_models")
+# The installed package (scwConfig.cmake) points it at the installed RTL first.
+if(NOT SCW_RTL_DIR)
+  set(SCW_RTL_DIR "${CMAKE_CURRENT_LIST_DIR}/../rtl_models")
+endif()
 
 function(scw_verilate target)
   cmake_parse_arguments(ARG "NO_TRACE" "TOP;PREFIX" "STAGE;PARAMS;FILES" ${ARGN})
