@@ -17,8 +17,6 @@ constexpr int kDispBenchHeight = 480;
 constexpr int kDispBenchWindow = 21;
 constexpr int kDispBenchDMin = 20;
 constexpr int kDispBenchNumDisp = 45;
-/// The thesis FPGA's clock, for ms figures.
-constexpr double kDispClockMhz = 125.0;
 
 template <int P>
 using DisparityBench = hls::disparity::DisparityParams<P, kDispBenchWidth, kDispBenchWindow,

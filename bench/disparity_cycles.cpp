@@ -35,6 +35,7 @@
 #include "hls/disparity/disparity.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/io/image_file.hpp"
+#include "host/pipeline/thesis_figures.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "sim/disparity_model.hpp"
 #include "sim/disparity_rtl.hpp"
@@ -49,11 +50,11 @@ using nlohmann::json;
 
 constexpr int W = bench::kDispBenchWidth;
 constexpr int H = bench::kDispBenchHeight;
-constexpr double kClockMhz = bench::kDispClockMhz;
+constexpr double kClockMhz = host::pipeline::thesis::kClockMhz;
 
 // The thesis FPGA at 125 MHz (Leu, Table 5.7): what the measured figures are set against.
-constexpr double kThesisPeriodMs = 6.8;
-constexpr double kThesisLatencyMs = 9.5;
+constexpr double kThesisPeriodMs = host::pipeline::thesis::kPeriodMs.fpga;
+constexpr double kThesisLatencyMs = host::pipeline::thesis::kLatencyMs.fpga;
 
 template <int P>
 using Kernel = hls::disparity::Disparity<bench::DisparityBench<P>>;

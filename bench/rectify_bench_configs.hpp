@@ -12,8 +12,6 @@ constexpr int kBenchHeight = 480;
 /// Raw rows kept on chip: enough for a real calibration's rotation and distortion (a few dozen
 /// rows), and a power of two as scw_rectify needs.
 constexpr int kBenchRows = 64;
-/// The thesis FPGA's clock, for ms figures.
-constexpr double kClockMhz = 125.0;
 
 template <int P>
 using RectifyBench = hls::rectify::RectifyParams<P, kBenchWidth, kBenchHeight, kBenchRows>;

@@ -35,6 +35,7 @@
 #include "Vbench_rectify_p4.h"
 #include "Vbench_rectify_p4_scw_rectify.h"
 #include "bench/rectify_bench_configs.hpp"
+#include "host/pipeline/thesis_figures.hpp"
 #include "host/rectify/fixed_map.hpp"
 #include "host/reference/rectify_ref.hpp"
 #include "sim/components.hpp"
@@ -52,7 +53,7 @@ using namespace scw;
 using bench::kBenchHeight;
 using bench::kBenchRows;
 using bench::kBenchWidth;
-using bench::kClockMhz;
+using host::pipeline::thesis::kClockMhz;
 using hls::rectify::RectifyConfig;
 using nlohmann::json;
 
