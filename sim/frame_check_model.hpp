@@ -3,20 +3,14 @@
 #pragma once
 
 #include "hls/pipeline/frame_check.hpp"
+#include "sim/side_component.hpp"
 
 namespace scw::sim {
 
-/// What a frame check presents in a cycle: the stream handshake of the pixel path plus the
-/// flag output. Two outputs, so not StreamOutputs; the C++ model and the RTL wrapper
-/// (sim/frame_check_rtl.hpp) both return it.
+/// What a frame check presents in a cycle: the pixel path's handshake plus the flag output
+/// (the C++ model and the RTL wrapper, sim/frame_check_rtl.hpp, both return it).
 template <typename Out>
-struct FrameCheckOutputs {
-  bool in_ready = false;
-  bool out_valid = false;
-  Out out{};
-  bool flag_valid = false;
-  hls::pipeline::FrameFlag flag{};
-};
+using FrameCheckOutputs = SideOutputs<Out, hls::pipeline::FrameFlag>;
 
 /// hls::pipeline::FrameCheck clocked as scw_frame_check, cycle for cycle. The pixel path is one
 /// register under adv = !out_valid || out_ready; the flag is one register. A beat whose
@@ -32,6 +26,7 @@ class FrameCheckModel {
   using in_type = typename Kernel::in_type;
   using out_type = typename Kernel::out_type;
   using flag_type = typename Kernel::flag_type;
+  using side_type = hls::pipeline::FrameFlag;  // SideComponent's side FIFO carries its packets
 
   explicit FrameCheckModel(const hls::pipeline::FrameCheckConfig& cfg) : k_(cfg) {}
 

@@ -8,6 +8,7 @@
 #include "hls/pipeline/frame_check.hpp"
 #include "sim/frame_check_model.hpp"
 #include "sim/pack.hpp"
+#include "sim/rtl_stream.hpp"
 #include "sim/verilated_harness.hpp"
 
 namespace scw::sim {
@@ -22,7 +23,7 @@ constexpr bool frame_check_params_match() {
 }
 
 /// A Verilated scw_frame_check built with `Params` (check with frame_check_params_match) as a
-/// cycle model of FrameCheckModel's shape, so a test or a FrameCheckComponent drives either.
+/// cycle model of FrameCheckModel's shape, so a test or a SideComponent drives either.
 template <typename VM, typename Params>
 class FrameCheckRtl {
  public:
@@ -30,6 +31,7 @@ class FrameCheckRtl {
   using in_type = typename Params::beat_type;
   using out_type = in_type;
   using flag_type = hls::pipeline::FrameFlagPacket;
+  using side_type = hls::pipeline::FrameFlag;
 
   /// Checks `cfg` as the model does (std::invalid_argument) and drives cfg_* before reset;
   /// Verilator keeps input values, so they stay stable throughout.
@@ -44,21 +46,14 @@ class FrameCheckRtl {
 
   FrameCheckOutputs<out_type> eval(bool in_valid, const in_type& in, bool out_ready,
                                    bool flag_ready) {
-    using L = BeatLayout<in_type>;
     VM& m = h_->dut();
-    m.in_valid_i = in_valid;
-    L::payload(in).to_port(m.in_data_i);
-    m.in_sof_i = in.sof;
-    m.in_eol_i = in.eol;
-    m.out_ready_i = out_ready;
+    drive_stage_in(m, in_valid, in, out_ready);
     m.flag_ready_i = flag_ready;
     m.eval();
     FrameCheckOutputs<out_type> o;
     o.in_ready = m.in_ready_o != 0;
     o.out_valid = m.out_valid_o != 0;
-    if (o.out_valid)
-      o.out = L::from_payload(Bits::from_port(m.out_data_o, L::kPayloadBits), m.out_sof_o != 0,
-                              m.out_eol_o != 0);
+    if (o.out_valid) o.out = read_stage_out<out_type>(m);
     o.flag_valid = m.flag_valid_o != 0;
     if (o.flag_valid) o.flag.error = m.flag_error_o != 0;
     return o;

@@ -17,7 +17,6 @@
 #include "sim/components.hpp"
 #include "sim/disparity_model.hpp"
 #include "sim/disparity_rtl.hpp"
-#include "sim/frame_check_component.hpp"
 #include "sim/frame_check_model.hpp"
 #include "sim/frame_check_rtl.hpp"
 #include "sim/ground_model.hpp"
@@ -32,6 +31,7 @@
 #include "sim/rectify_model.hpp"
 #include "sim/rectify_rtl.hpp"
 #include "sim/result_merge.hpp"
+#include "sim/side_component.hpp"
 #include "sim/road_model.hpp"
 #include "sim/road_rtl.hpp"
 #include "sim/rtl_params.hpp"
@@ -113,6 +113,7 @@ class PipelineChain {
     // The road stage takes the disparity beats whole, and the labelling stage what it leaves,
     // a lane a pixel.
     road_ = &sim_.fifo<label_beat>("road", d.disp);
+    lines_ = &sim_.fifo<hls::Packet<hls::road::Line>>("road_line", d.line);
     add_road(engines.road);
     label_in_ = road_;
     if constexpr (P == 1) {
@@ -202,13 +203,13 @@ class PipelineChain {
     const hls::pipeline::FrameCheckConfig cfg{setup_.width, setup_.height};
     using CppModel = FrameCheckModel<P, Build::kMaxWidthPx, Build::kMaxHeight>;
     if (e == Engine::cpp) {
-      sim_.add<FrameCheckComponent<CppModel>>(name, CppModel(cfg), in, out, flags);
+      sim_.add<SideComponent<CppModel>>(name, CppModel(cfg), in, out, flags);
       return;
     }
     using VM = typename Rtl::check;
     if constexpr (kBuilt<VM>) {
       using Params = typename CppModel::params;
-      sim_.add<FrameCheckComponent<FrameCheckRtl<VM, Params>>>(
+      sim_.add<SideComponent<FrameCheckRtl<VM, Params>>>(
           name, FrameCheckRtl<VM, Params>(name, cfg), in, out, flags);
     } else {
       not_built("frame check");
@@ -288,14 +289,14 @@ class PipelineChain {
                       std::is_same_v<typename Params::out_beat, label_beat>,
                   "the road stage sits between the disparity and labelling stages");
     if (e == Engine::cpp) {
-      sim_.add<StreamComponent<RoadModel<Params>>>("road", RoadModel<Params>(setup_.road), *disp_,
-                                                   *road_);
+      sim_.add<SideComponent<RoadModel<Params>>>("road", RoadModel<Params>(setup_.road), *disp_,
+                                                 *road_, *lines_);
       return;
     }
     using VM = typename Rtl::road;
     if constexpr (kBuilt<VM>) {
-      sim_.add<StreamComponent<RoadRtl<VM, Params>>>(
-          "road", make_road_rtl<VM, Params>("road", setup_.road), *disp_, *road_);
+      sim_.add<SideComponent<RoadSideRtl<VM, Params>>>(
+          "road", RoadSideRtl<VM, Params>("road", setup_.road), *disp_, *road_, *lines_);
     } else {
       not_built("road");
     }
@@ -342,16 +343,19 @@ class PipelineChain {
     static_assert(Build::labelling::kWidths.area <= hls::warning::kRuleAreaBits,
                   "the warning stage's distance rule reads kRuleAreaBits of an object's area: a "
                   "labelling build of at most 2^20 - 1 pixels");
+    // The top's warning stage always measures heights above the road stage's lines.
+    hls::warning::WarningConfig cfg = setup_.warning;
+    cfg.road_height = true;
     if (e == Engine::cpp) {
-      hls::warning::check_config<Params>(setup_.warning);
-      sim_.add<StreamComponent<WarningModel<Params>>>("warning", WarningModel<Params>(setup_.warning),
-                                                      *warning_in_, res);
+      hls::warning::check_config<Params>(cfg);
+      sim_.add<JoinComponent<WarningRoadModel<Params>>>("warning", WarningRoadModel<Params>(cfg),
+                                                        *warning_in_, *lines_, res);
       return;
     }
     using VM = typename Rtl::warning;
     if constexpr (kBuilt<VM>) {
-      sim_.add<StreamComponent<WarningRtl<VM>>>(
-          "warning", make_warning_rtl<VM, Params>("warning", setup_.warning), *warning_in_, res);
+      sim_.add<JoinComponent<WarningRoadRtl<VM>>>(
+          "warning", make_warning_road_rtl<VM, Params>("warning", cfg), *warning_in_, *lines_, res);
     } else {
       not_built("warning");
     }
@@ -381,6 +385,7 @@ class PipelineChain {
   Fifo<raw_beat>* rect_r_ = nullptr;
   Fifo<disp_beat>* disp_ = nullptr;
   Fifo<label_beat>* road_ = nullptr;
+  Fifo<hls::Packet<hls::road::Line>>* lines_ = nullptr;
   Fifo<label_beat>* label_in_ = nullptr;
   Fifo<hls::labelling::LabelPacket>* objects_ = nullptr;
   Fifo<hls::labelling::LabelPacket>* warning_in_ = nullptr;

@@ -52,6 +52,7 @@ struct PipelineDepths {
   int obj = 2;   // object words
   int res = 2;   // frame results and pipeline results
   int flag = 4;  // per-frame input flags: frames in flight between input and result
+  int line = 4;  // road lines: frames in flight between the road stage and the warning stage
 };
 
 /// One run's settings. Width and height are the frame's for every stage.

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// The Verilated scw_road as a stream model (disparities in and out), and the compile-time check
-// that it was built with the C++ parameters.
+// The Verilated scw_road as a stream model (disparities in and out) or with its line output, and
+// the compile-time check that it was built with the C++ parameters.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "hls/road/road.hpp"
 #include "sim/rtl_stream.hpp"
+#include "sim/side_component.hpp"
 
 namespace scw::sim {
 
@@ -20,7 +22,9 @@ constexpr bool road_params_match() {
          VM::FitClocks == hls::road::kFitClocks && VM::FracBits == hls::road::kFracBits;
 }
 
-/// `VM` is a Verilated scw_road built with `Params` (check with road_params_match).
+/// `VM` is a Verilated scw_road built with `Params` (check with road_params_match), as a
+/// one-output stream model: its line output is always read (make_road_rtl ties line_ready_i
+/// high), as RoadModel's three-argument eval has it.
 template <typename VM, typename Params>
 using RoadRtl = RtlStream<VM, typename Params::in_beat, typename Params::out_beat>;
 
@@ -46,7 +50,52 @@ void drive_road_config(VM& m, const hls::road::RoadConfig& cfg) {
 template <typename VM, typename Params>
 RoadRtl<VM, Params> make_road_rtl(const std::string& name, const hls::road::RoadConfig& cfg) {
   hls::road::check_config(cfg);
-  return RoadRtl<VM, Params>(name, [cfg](VM& m) { drive_road_config(m, cfg); });
+  return RoadRtl<VM, Params>(name, [cfg](VM& m) {
+    drive_road_config(m, cfg);
+    m.line_ready_i = 1;
+  });
 }
+
+/// A Verilated scw_road with its line output, RoadModel's four-argument shape (SideComponent).
+template <typename VM, typename Params>
+class RoadSideRtl {
+ public:
+  using in_type = typename Params::in_beat;
+  using out_type = typename Params::out_beat;
+  using side_type = hls::road::Line;
+
+  /// Checks `cfg` as the model does (std::invalid_argument) and drives cfg_* before reset.
+  RoadSideRtl(const std::string& name, const hls::road::RoadConfig& cfg)
+      : h_(std::make_unique<Harness<VM>>(name)) {
+    hls::road::check_config(cfg);
+    drive_road_config(h_->dut(), cfg);
+    h_->reset();
+  }
+
+  SideOutputs<out_type, side_type> eval(bool in_valid, const in_type& in, bool out_ready,
+                                        bool line_ready) {
+    VM& m = h_->dut();
+    drive_stage_in(m, in_valid, in, out_ready);
+    m.line_ready_i = line_ready;
+    m.eval();
+    SideOutputs<out_type, side_type> o;
+    o.in_ready = m.in_ready_o != 0;
+    o.out_valid = m.out_valid_o != 0;
+    if (o.out_valid) o.out = read_stage_out<out_type>(m);
+    o.flag_valid = m.line_valid_o != 0;
+    if (o.flag_valid) {
+      o.flag.a = static_cast<std::int32_t>(m.line_a_o);
+      o.flag.b = static_cast<std::int32_t>(static_cast<std::uint32_t>(m.line_b_o));
+    }
+    return o;
+  }
+  void tick() { h_->tick(); }
+
+  Harness<VM>& harness() { return *h_; }
+  VM& dut() { return h_->dut(); }
+
+ private:
+  std::unique_ptr<Harness<VM>> h_;
+};
 
 }  // namespace scw::sim

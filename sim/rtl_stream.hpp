@@ -33,6 +33,17 @@ Out read_stage_out(const VM& m) {
   }
 }
 
+/// Drives a stage's input beat (in_valid_i, in_data_i with the pixels, in_sof_i, in_eol_i) and
+/// its out_ready_i.
+template <typename In, typename VM>
+void drive_stage_in(VM& m, bool in_valid, const In& in, bool out_ready) {
+  m.in_valid_i = in_valid;
+  BeatLayout<In>::payload(in).to_port(m.in_data_i);
+  m.in_sof_i = BeatLayout<In>::sof(in);
+  m.in_eol_i = BeatLayout<In>::eol(in);
+  m.out_ready_i = out_ready;
+}
+
 /// Binds the common port shape (in_valid_i/in_ready_o/in_data_i, out_valid_o/out_ready_i/
 /// out_data_o). Modules with in_sof_i/in_eol_i ports (stages) carry the flags on them and the
 /// pixels in *_data; opaque elastic blocks (FIFO, stream register, skid buffer) carry the whole
@@ -56,13 +67,11 @@ class RtlStream {
 
   StreamOutputs<Out> eval(bool in_valid, const In& in, bool out_ready) {
     VM& m = h_->dut();
-    m.in_valid_i = in_valid;
-    m.out_ready_i = out_ready;
     if constexpr (detail::has_flag_ports<VM>::value) {
-      BeatLayout<In>::payload(in).to_port(m.in_data_i);
-      m.in_sof_i = BeatLayout<In>::sof(in);
-      m.in_eol_i = BeatLayout<In>::eol(in);
+      drive_stage_in(m, in_valid, in, out_ready);
     } else {
+      m.in_valid_i = in_valid;
+      m.out_ready_i = out_ready;
       pack(in).to_port(m.in_data_i);
     }
     m.eval();

@@ -29,10 +29,15 @@ void check_config(const WarningConfig& cfg) {
          " unknown (0 closest, 1 spread)");
 }
 
-/// The stage. One pipeline enable (`in_ready = !out_valid || out_ready`): a word taken at a clock
+/// The stage. One pipeline enable (`en = !out_valid || out_ready`): a word taken at a clock
 /// edge leaves the kLatency - 1 pipeline registers kLatency - 1 edges later and is folded into
 /// the frame's result; the word that closes the frame loads the output register on the same
-/// edge, so its result shows kLatency clocks after it was taken.
+/// edge, so its result shows kLatency clocks after it was taken. With cfg.road_height the
+/// first word of each frame (the first after reset or after a `last`) is taken together with a
+/// road line from the road input, and waits for one:
+///   in_ready   = en && (!first || road_valid)
+///   road_ready = en && first && in_valid
+/// Without it the road input is never read.
 template <typename Params>
 class Warning {
  public:
@@ -42,13 +47,20 @@ class Warning {
   explicit Warning(const WarningConfig& cfg) : cfg_(cfg) { check_config<Params>(cfg); }
 
   // ---- what the ports show this clock ----
-  bool in_ready(bool out_ready) const { return !out_valid_ || out_ready; }
+  bool in_ready(bool out_ready, bool road_valid = false) const {
+    return (!out_valid_ || out_ready) && (!needs_road() || road_valid);
+  }
+  bool road_ready(bool in_valid, bool out_ready) const {
+    return (!out_valid_ || out_ready) && needs_road() && in_valid;
+  }
   bool out_valid() const { return out_valid_; }
   const out_type& out() const { return out_; }
   const WarningConfig& config() const { return cfg_; }
 
-  /// One clock edge.
-  void clock(bool in_valid, const in_type& in, bool out_ready) {
+  /// One clock edge; `road_valid` and `road` are the road input's (cfg.road_height).
+  void clock(bool in_valid, const in_type& in, bool out_ready, bool road_valid = false,
+             const RoadLine& road = {}) {
+    const bool take = in_valid && in_ready(out_ready, road_valid);
     if (out_valid_ && out_ready) out_valid_ = false;
     const bool enable = !out_valid_ || out_ready;
     if (!enable) return;
@@ -58,11 +70,13 @@ class Warning {
     if (last.valid) fold(last);
     for (int i = kStages - 1; i > 0; --i) pipe_[i] = pipe_[i - 1];
     pipe_[0] = Slot{};
-    if (in_valid) {
+    if (take) {
+      if (needs_road()) road_ = road;
+      first_ = in.last;
       pipe_[0].valid = true;
       pipe_[0].word = in.data;
       pipe_[0].last = in.last;
-      if (!in.data.is_status) pipe_[0].eval = evaluate<Params>(in.data.object, cfg_);
+      if (!in.data.is_status) pipe_[0].eval = evaluate<Params>(in.data.object, cfg_, road_);
     }
   }
 
@@ -74,6 +88,8 @@ class Warning {
     labelling::LabelWord word;
     ObjectEval eval;
   };
+
+  bool needs_road() const { return cfg_.road_height && first_; }
 
   void fold(const Slot& s) {
     if (!s.word.is_status) {
@@ -125,6 +141,8 @@ class Warning {
   bool have_best_ = false;
   bool out_valid_ = false;
   out_type out_{};
+  bool first_ = true;  // the next word starts a frame
+  RoadLine road_{};    // the frame's road (road_height)
 };
 
 // The loop label names the loop in HLS reports; g++ would call it unused.
@@ -132,18 +150,25 @@ class Warning {
 #pragma GCC diagnostic ignored "-Wunused-label"
 /// Object tables through the stage with no stalls: `n` words from `in` (one or more frames, each
 /// closed by its status word with `last`), one result per frame to `out`, in order; returns how
-/// many. The loop runs kLatency clocks past the last word so the last result leaves. What an HLS
-/// tool synthesises as the stage's top; `out` needs room for one result per frame (at most n).
+/// many. With cfg.road_height, `roads` holds one road line a frame, taken with each frame's
+/// first word. The loop runs kLatency clocks past the last word so the last result leaves. What
+/// an HLS tool synthesises as the stage's top; `out` needs room for one result per frame (at
+/// most n).
 template <typename Params>
-int warning_frame(Warning<Params>& w, const labelling::LabelPacket* in, int n, ResultPacket* out) {
-  int results = 0;
+int warning_frame(Warning<Params>& w, const labelling::LabelPacket* in, int n, ResultPacket* out,
+                  const RoadLine* roads = nullptr) {
+  int results = 0, road = 0;
 loop_word:
   for (int i = 0; i < n + kLatency; ++i) {
     // clang-format off
 #pragma HLS PIPELINE II=1
     // clang-format on
     const bool valid = i < n;
-    w.clock(valid, valid ? in[i] : labelling::LabelPacket{}, true);
+    const bool road_valid = roads != nullptr;
+    const bool take_road = road_valid && w.road_ready(valid, true);
+    w.clock(valid, valid ? in[i] : labelling::LabelPacket{}, true, road_valid,
+            road_valid ? roads[road] : RoadLine{});
+    if (take_road) ++road;
     if (w.out_valid()) out[results++] = w.out();
   }
   return results;

@@ -7,6 +7,7 @@
 
 #include "hls/common/beat.hpp"
 #include "hls/labelling/labelling_params.hpp"
+#include "hls/road/road_params.hpp"
 
 namespace scw::hls::warning {
 
@@ -64,6 +65,10 @@ struct WarningConfig {
   std::uint16_t d_limit_q4 = 0;        // d_max >= this: closer than the search range measures
   DistanceRule rule = DistanceRule::kClosest;  // which disparity places an object
   std::uint8_t spread_q4 = 0;          // k of kSpread, Q4.4 (0 .. 15.9375)
+  // A road line (hls::road::Line, the road stage's) comes with every frame, taken with its first
+  // word, and an object's height is its top's above the road where it stands (road_height);
+  // otherwise its box's height at its depth. The pipeline top always has it.
+  bool road_height = false;
 };
 
 enum class Severity : std::uint8_t { kNone = 0, kLow = 1, kMedium = 2, kHigh = 3 };
@@ -132,6 +137,33 @@ constexpr std::uint32_t rule_disparity(const labelling::Object& o, const Warning
   return static_cast<std::uint32_t>(q < o.d_max ? q : u128{o.d_max});
 }
 
+/// The slope bits a road line's `a` carries on the port (18).
+inline constexpr std::int64_t kMaxSlopeCode = (std::int64_t{1} << road::kSlopeBits) - 1;
+
+/// The road line that comes with a frame (road_height): d_road(v) = b + a v, code x 2^12.
+using RoadLine = road::Line;
+
+/// Whether the top of `o`'s box, row y_min - 1/2, lies at least min_height above the road where
+/// the object stands, at the rule's disparity dq (docs/warning.md "Height above the road"). The
+/// road's disparity at that row is b + a (y_min - 1/2); the object stands where the road's
+/// disparity is dq, and the height between is H (dq - d_road) / dq with H = baseline / a the
+/// camera height the slope gives (a = 2^16 baseline / H, code x 2^12 a row). In integers:
+///   D = dq 2^13 - 2 b - a (2 y_min - 1)     (code x 2^13; within +-2^37)
+///   height >= min_height  <=>  baseline_q8 D >= 32 min_height_mm a dq
+/// (both sides below 2^58). A flat road (a = 0) puts every object with D >= 0 above it.
+struct RoadHeight {
+  std::int64_t lhs = 0;  // baseline_q8 D
+  std::int64_t rhs = 0;  // 32 min_height_mm a dq
+};
+constexpr RoadHeight road_height(const labelling::Object& o, std::uint32_t dq, const RoadLine& road,
+                                  const WarningConfig& c) {
+  const std::int64_t a = road.a & kMaxSlopeCode;
+  const std::int64_t d =
+      (std::int64_t{dq} << 13) - 2 * std::int64_t{road.b} - a * (2 * std::int64_t{o.y_min} - 1);
+  return RoadHeight{std::int64_t{c.baseline_q8} * d,
+                    32 * std::int64_t{c.min_height_mm} * a * std::int64_t{dq}};
+}
+
 /// One object as the warning stage sees it. Lengths in mm, camera coordinates unless named v_.
 struct ObjectEval {
   std::uint32_t d_q4 = 0;   // the disparity that places it (rule_disparity), Q11.4
@@ -141,7 +173,8 @@ struct ObjectEval {
   std::int32_t x_mm = 0, y_mm = 0, z_mm = 0;  // closest point, eq. 2.18
   std::int32_t x0_mm = 0, x1_mm = 0;          // left and right bounding-box edges at that depth
   std::int32_t y_top_mm = 0, y_bot_mm = 0;    // top and bottom edges
-  std::int32_t width_mm = 0, height_mm = 0;   // eq. 3.12
+  std::int32_t width_mm = 0, height_mm = 0;   // eq. 3.12; with road_height, the top's above
+                                              //   the road (the model's report, not the RTL's)
   std::int32_t distance_mm = 0;               // eq. 3.11 minus veh_z: from the bumper
   std::int32_t gap_mm = 0;                    // to the tunnel's cross-section, 0 = inside
   bool in_tunnel = false;
@@ -155,7 +188,8 @@ struct ObjectEval {
 /// thesis's rule). Codes past the table read its last entry; check_config keeps d_limit inside
 /// the table, so they are too close.
 template <typename Params>
-constexpr ObjectEval evaluate(const labelling::Object& o, const WarningConfig& c) {
+constexpr ObjectEval evaluate(const labelling::Object& o, const WarningConfig& c,
+                              const RoadLine& road = {}) {
   ObjectEval e;
   const std::uint32_t dq = rule_disparity(o, c);
   e.d_q4 = dq;
@@ -192,6 +226,14 @@ constexpr ObjectEval evaluate(const labelling::Object& o, const WarningConfig& c
   e.gap_mm = mx(gx, gy);
   e.in_tunnel = e.gap_mm == 0;
   e.obstacle = e.height_mm >= c.min_height_mm;
+  if (c.road_height) {
+    const RoadHeight h = road_height(o, dq, road, c);
+    e.obstacle = h.lhs >= h.rhs;
+    const std::int64_t per_mm = 32 * std::int64_t{road.a & kMaxSlopeCode} * dq;
+    const std::int64_t mm = per_mm > 0 ? h.lhs / per_mm : (h.lhs >= 0 ? 0x7fffffff : -0x7fffffff);
+    e.height_mm = static_cast<std::int32_t>(mm > 0x7fffffff ? 0x7fffffff
+                                            : mm < -0x7fffffff ? -0x7fffffff : mm);
+  }
   if (!e.obstacle) return e;
   // Too close: closer than the search range can measure, so judged as if at the bumper.
   const std::int32_t d = e.too_close ? 0 : e.distance_mm;

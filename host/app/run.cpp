@@ -60,7 +60,8 @@ int label_of(const labelling::Segmentation& seg, std::size_t index) {
 
 }  // namespace
 
-void Runner::classify_and_track(FrameOutput& out, const hls::warning::WarningConfig& wcfg) {
+void Runner::classify_and_track(FrameOutput& out, const hls::warning::WarningConfig& wcfg,
+                                const hls::road::Line& road) {
   std::vector<hls::labelling::Object> objects;
   std::vector<hls::warning::ObjectEval> evals;
   for (const auto& r : out.objects) {
@@ -75,7 +76,7 @@ void Runner::classify_and_track(FrameOutput& out, const hls::warning::WarningCon
       out.objects[static_cast<std::size_t>(k)].target = static_cast<int>(out.targets.size());
     }
     tr.object = t.object;
-    tr.eval = warning::evaluate_object(t.object, wcfg);
+    tr.eval = warning::evaluate_object(t.object, wcfg, &road);
     const auto hu = labelling::hu_moments(t.object);
     tr.hu = {hu[0], hu[1], hu[2]};
     Features f;
@@ -128,12 +129,14 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
                                 std::to_string(right_grey.rows) + ")");
   FrameOutput out;
   StageOutputs hw;
+  hls::road::Line road;  // the frame's road: the warning stage measures heights above it
   if (engine_) {
     hw = engine_(left_grey, right_grey);
     out.left = hw.left;
     out.right = hw.right;
     out.disparity = hw.disparity;
     out.road_mask = hw.road_mask;
+    road = hw.road;
   } else if (maps_) {
     out.left = rectify::rectify_image(left_grey, maps_->left, maps_->lead_rows);
     out.right = rectify::rectify_image(right_grey, maps_->right, maps_->lead_rows);
@@ -146,18 +149,20 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
         disparity::mode_config(opt_.mode, out.left.cols, out.left.rows, opt_.min_disp);
     out.disparity = disparity::disparity_image(out.left, out.right, opt_.window, opt_.min_disp,
                                                opt_.max_disp, dcfg);
-    if (opt_.road) {
-      if (!road_) {
-        const double cv = opt_.warning.cv_px != 0.0 ? opt_.warning.cv_px
-                                                    : 0.5 * (out.disparity.rows - 1);
-        road_ = std::make_unique<road::RoadFilter>(road::to_fixed(road::rig_setup(
-            opt_.warning.baseline_m, opt_.warning.focal_px, cv, opt_.camera_height_m,
-            opt_.camera_pitch_deg)));
-      }
-      const cv::Mat before = out.disparity;
-      out.disparity = road_->filter(before);
-      out.road_mask = road::removed_mask(before, out.disparity);
+    // The road stage always fits the road (heights are measured above it); it removes it from
+    // the labelling's input only with opt_.road, as in the pipeline.
+    if (!road_) {
+      const double cv = opt_.warning.cv_px != 0.0 ? opt_.warning.cv_px
+                                                  : 0.5 * (out.disparity.rows - 1);
+      auto rs = road::rig_setup(opt_.warning.baseline_m, opt_.warning.focal_px, cv,
+                                opt_.camera_height_m, opt_.camera_pitch_deg);
+      rs.enable = opt_.road;
+      road_ = std::make_unique<road::RoadFilter>(road::to_fixed(rs));
     }
+    const cv::Mat before = out.disparity;
+    out.disparity = road_->filter(before);
+    out.road_mask = road::removed_mask(before, out.disparity);
+    road = road_->road();
     if (opt_.ground)
       out.disparity = ground::remove_ground(
           out.disparity,
@@ -177,7 +182,8 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
 
   auto wsetup = opt_.warning;
   const auto wcfg = host::warning::to_fixed(wsetup);
-  out.result = warning::run_warning(warning::table_words(seg.objects, seg.status), wcfg);
+  out.result =
+      warning::run_warning(warning::table_words(seg.objects, seg.status), wcfg, nullptr, &road);
   if (engine_) {
     if (hw.objects != seg.objects || !(hw.status == seg.status))
       throw std::logic_error("the engine's object table differs from the C++ labelling model's "
@@ -193,11 +199,11 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
     ObjectReport r;
     r.label = static_cast<int>(k) + 1;
     r.object = seg.objects_by_label[k];
-    r.eval = warning::evaluate_object(r.object, wcfg);
+    r.eval = warning::evaluate_object(r.object, wcfg, &road);
     r.hu = labelling::hu_moments(r.object);
     out.objects.push_back(r);
   }
-  classify_and_track(out, wcfg);
+  classify_and_track(out, wcfg, road);
   auto deciding = host::warning::overlay_object(out.result, wsetup);
   if (deciding && out.deciding_label > 0) {
     const ObjectReport& dec = out.objects[static_cast<std::size_t>(out.deciding_label - 1)];

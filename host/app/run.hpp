@@ -96,6 +96,7 @@ struct StageOutputs {
   cv::Mat left, right;  // rectified grey
   cv::Mat disparity;    // CV_16S, Q11.4, what the labelling stage took
   cv::Mat road_mask;    // CV_8U, 255 where the road stage removed a valid disparity
+  hls::road::Line road;  // the road the frame was gated with (heights are above it)
   std::vector<hls::labelling::Object> objects;  // as the stage emitted them
   hls::labelling::FrameStatus status;
   hls::warning::FrameResult result;
@@ -118,7 +119,8 @@ class Runner {
 
  private:
   struct AppLayer;
-  void classify_and_track(FrameOutput& out, const hls::warning::WarningConfig& wcfg);
+  void classify_and_track(FrameOutput& out, const hls::warning::WarningConfig& wcfg,
+                          const hls::road::Line& road);
   RunOptions opt_;
   std::optional<RectifyMaps> maps_;
   StageEngine engine_;

@@ -33,26 +33,27 @@ ReferenceFrame reference_frame(const cv::Mat& left, const cv::Mat& right, int wi
   ReferenceFrame f;
   f.disparity = cv::Mat(h, w, CV_16S);
   std::memcpy(f.disparity.data, d.data(), d.size() * sizeof(std::uint16_t));
-  if (opt.road) {
-    const auto w_setup = warning_setup(w, h, opt);
-    auto rsetup = road::rig_setup(w_setup.baseline_m, w_setup.focal_px, w_setup.cv_px,
-                                  opt.camera_height_m, opt.camera_pitch_deg);
-    rsetup.min_count = opt.road_min_count;
-    const auto rcfg = road::to_fixed(rsetup);
-    f.road = reference::to_px(rcfg.nominal);
-    const cv::Mat map = f.disparity.clone();
-    for (int k = 0; k < frames; ++k) {
-      const auto step = reference::road_reference(map, f.road, rcfg);
-      f.disparity = step.kept;
-      if (k + 1 < frames) f.road = step.next;
-    }
-    std::memcpy(d.data(), f.disparity.data, d.size() * sizeof(std::uint16_t));
+  // The road reference runs as the stage does, always: it removes the road only with opt.road,
+  // and the warning reference measures heights above the frame's road.
+  const auto w_setup = warning_setup(w, h, opt);
+  auto rsetup = road::rig_setup(w_setup.baseline_m, w_setup.focal_px, w_setup.cv_px,
+                                opt.camera_height_m, opt.camera_pitch_deg);
+  rsetup.min_count = opt.road_min_count;
+  rsetup.enable = opt.road;
+  const auto rcfg = road::to_fixed(rsetup);
+  f.road = reference::to_px(rcfg.nominal);
+  const cv::Mat map = f.disparity.clone();
+  for (int k = 0; k < frames; ++k) {
+    const auto step = reference::road_reference(map, f.road, rcfg);
+    f.disparity = step.kept;
+    if (k + 1 < frames) f.road = step.next;
   }
+  std::memcpy(d.data(), f.disparity.data, d.size() * sizeof(std::uint16_t));
   const int invalid = static_cast<std::int16_t>(hls::disparity::invalid_code(cfg));
   const auto lcfg = labelling::grid_config(w, h, opt.tiles_x, opt.tiles_y,
                                            invalid > 0 ? invalid : 0, opt.min_area);
   f.objects = reference::labelling_reference(d.data(), w, h, lcfg).objects;
-  f.result = host::warning::fold_ref(f.objects, warning_setup(w, h, opt));
+  f.result = host::warning::fold_ref(f.objects, w_setup, &f.road);
   return f;
 }
 

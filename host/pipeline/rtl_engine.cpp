@@ -97,6 +97,7 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
       throw std::logic_error("the engine's road stage differs from the C++ road model");
     s.road_mask = road::removed_mask(picture(chain.disparity().recorded(), width, height, CV_16S),
                                      road_out);
+    s.road = frame_setup.road.nominal;  // a fresh chain gates its one frame with it
     line = road.next_road();
     for (const auto& w : chain.objects().recorded()) {
       if (w.data.is_status) s.status = w.data.status;

@@ -48,14 +48,13 @@ sim::PipelineSetup make_setup(int width, int height, int grid_log2, const StageO
                                        invalid > 0 ? invalid : 0, opt.min_area);
   const auto w = warning_setup(width, height, opt);
   s.warning = host::warning::to_fixed(w);
-  if (opt.road) {
-    auto r = road::rig_setup(w.baseline_m, w.focal_px, w.cv_px, opt.camera_height_m,
-                             opt.camera_pitch_deg);
-    r.min_count = opt.road_min_count;
-    s.road = road::to_fixed(r);
-  } else {
-    s.road.enable = false;
-  }
+  // The road stage is always in the chain: it fits the road (the warning stage measures heights
+  // above it) and removes it from the labelling's input only with opt.road.
+  auto r = road::rig_setup(w.baseline_m, w.focal_px, w.cv_px, opt.camera_height_m,
+                           opt.camera_pitch_deg);
+  r.min_count = opt.road_min_count;
+  r.enable = opt.road;
+  s.road = road::to_fixed(r);
   s.knot_cols = rectify::knot_count(width, grid_log2);
   s.knot_rows = rectify::knot_count(height, grid_log2);
   s.left_knots = std::move(left_knots);

@@ -36,7 +36,8 @@ double distance_tolerance_m(const RefEval& e, const WarningSetup& s) {
   return 0.01 + (spread && e.disparity_px > 0 ? e.camera_distance_m / (16 * e.disparity_px) : 0);
 }
 
-RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s) {
+RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s,
+                     const reference::RoadLinePx* road) {
   RefEval r;
   // The disparity word is a signed Q11.4 number: codes with the top bit set are negative
   // (invalid), and below 1 px the object is too far to place.
@@ -72,7 +73,16 @@ RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s) {
   r.gap_m = std::max(0.0, r.signed_gap_m);
   r.in_tunnel = r.gap_m == 0.0;
 
-  r.obstacle = r.height_m >= s.min_height_m;
+  if (road != nullptr) {
+    const double d_road = road->a * (o.y_min - 0.5) + road->b;
+    // baseline (d - d_road) >= min_height a d, as the stage compares it (a = 0: a road at one
+    // disparity puts every object nearer than it above it)
+    const double rise = s.baseline_m * (d - d_road);
+    r.height_m = road->a > 0 ? rise / (road->a * d) : (rise >= 0 ? HUGE_VAL : -HUGE_VAL);
+    r.obstacle = rise >= s.min_height_m * road->a * d;
+  } else {
+    r.obstacle = r.height_m >= s.min_height_m;
+  }
   if (!r.obstacle) return r;
   r.severity = judge_severity(r.in_tunnel, r.gap_m, r.judged_distance_m(), s);
   return r;
@@ -87,10 +97,11 @@ Severity judge_severity(bool in_tunnel, double gap_m, double distance_m, const W
   return gap_m <= s.near_m && distance_m < s.medium_m ? Severity::kMedium : Severity::kLow;
 }
 
-RefFrame fold_ref(const std::vector<hls::labelling::Object>& objects, const WarningSetup& s) {
+RefFrame fold_ref(const std::vector<hls::labelling::Object>& objects, const WarningSetup& s,
+                  const reference::RoadLinePx* road) {
   RefFrame f;
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    const RefEval e = evaluate_ref(objects[i], s);
+    const RefEval e = evaluate_ref(objects[i], s, road);
     ++f.objects;
     if (!e.obstacle) continue;
     ++f.obstacles;

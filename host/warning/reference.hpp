@@ -8,6 +8,7 @@
 
 #include "hls/labelling/labelling_params.hpp"
 #include "hls/warning/warning_params.hpp"
+#include "host/reference/road_ref.hpp"
 #include "host/warning/setup.hpp"
 
 namespace scw::host::warning {
@@ -23,7 +24,7 @@ struct RefEval {
   /// (x_min - 1/2, y_min - 1/2) and (x_max + 1/2, y_max + 1/2).
   Eigen::Vector3d top_left = Eigen::Vector3d::Zero();
   Eigen::Vector3d bottom_right = Eigen::Vector3d::Zero();
-  double width_m = 0.0, height_m = 0.0;  // eq. 3.12
+  double width_m = 0.0, height_m = 0.0;  // eq. 3.12; with a road, the top's above it
   double camera_distance_m = 0.0;        // |A|, eq. 3.11
   double distance_m = 0.0;               // |A| - vehicle_origin.z: from the bumper
   /// The box's separation from the tunnel's cross-section: the largest of the four amounts by
@@ -60,14 +61,20 @@ hls::warning::Severity judge_severity(bool in_tunnel, double gap_m, double dista
 double rule_disparity_px(const hls::labelling::Object& o, const WarningSetup& s);
 
 /// Evaluates one labelling object in double precision: no integer arithmetic, thresholds taken
-/// from `s` in metres as given (not rounded to the stage's millimetres).
-RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s);
+/// from `s` in metres as given (not rounded to the stage's millimetres). With `road` (the frame's
+/// road line, as the pipeline's warning stage has it) the height is the top's above the road
+/// where the object stands: the road's disparity at the box's top edge is d_road =
+/// a (y_min - 1/2) + b, the object stands where it is d, and a flat road seen from height
+/// H = baseline / a puts the top H (d - d_road) / d above it.
+RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s,
+                     const reference::RoadLinePx* road = nullptr);
 
 /// How far the stage's distance may lie from the reference's for object `e`: 1 cm of fixed-point
 /// arithmetic, and under the spread rule one Q11.4 code of the rule's rounding (|A| / (16 d)).
 double distance_tolerance_m(const RefEval& e, const WarningSetup& s);
 
-/// Evaluates a frame's object table and picks the deciding obstacle.
-RefFrame fold_ref(const std::vector<hls::labelling::Object>& objects, const WarningSetup& s);
+/// Evaluates a frame's object table (with its road, when given) and picks the deciding obstacle.
+RefFrame fold_ref(const std::vector<hls::labelling::Object>& objects, const WarningSetup& s,
+                  const reference::RoadLinePx* road = nullptr);
 
 }  // namespace scw::host::warning

@@ -24,9 +24,20 @@ std::vector<hls::labelling::LabelPacket> table_words(
   return words;
 }
 
+namespace {
+
+WarningConfig with_road(WarningConfig cfg, const hls::warning::RoadLine* road) {
+  cfg.road_height = road != nullptr;
+  return cfg;
+}
+
+}  // namespace
+
 FrameResult run_warning(const std::vector<hls::labelling::LabelPacket>& words,
-                        const WarningConfig& cfg, std::int64_t* cycles) {
-  hls::warning::Warning<HostParams> k(cfg);
+                        const WarningConfig& cfg, std::int64_t* cycles,
+                        const hls::warning::RoadLine* road) {
+  hls::warning::Warning<HostParams> k(with_road(cfg, road));
+  const hls::warning::RoadLine line = road != nullptr ? *road : hls::warning::RoadLine{};
   std::size_t next = 0;
   // Every word is offered on its own clock; the result leaves kLatency clocks after the
   // closing word, so this bound is never reached by a frame that closes.
@@ -38,15 +49,16 @@ FrameResult run_warning(const std::vector<hls::labelling::LabelPacket>& words,
     }
     const bool valid = next < words.size();
     const hls::labelling::LabelPacket in = valid ? words[next] : hls::labelling::LabelPacket{};
-    if (valid && k.in_ready(true)) ++next;
-    k.clock(valid, in, true);
+    if (valid && k.in_ready(true, true)) ++next;
+    k.clock(valid, in, true, true, line);
   }
   throw std::logic_error("run_warning: the words close no frame (no status word or `last`)");
 }
 
-hls::warning::ObjectEval evaluate_object(const hls::labelling::Object& o,
-                                         const WarningConfig& cfg) {
-  return hls::warning::evaluate<HostParams>(o, cfg);
+hls::warning::ObjectEval evaluate_object(const hls::labelling::Object& o, const WarningConfig& cfg,
+                                         const hls::warning::RoadLine* road) {
+  return hls::warning::evaluate<HostParams>(o, with_road(cfg, road),
+                                            road != nullptr ? *road : hls::warning::RoadLine{});
 }
 
 }  // namespace scw::warning

@@ -26,10 +26,15 @@ std::vector<hls::labelling::LabelPacket> table_words(
 /// the clocks from the first word's acceptance to the result in `*cycles` if given. Throws
 /// std::invalid_argument (naming the field) for a config the host build cannot take, and
 /// std::logic_error if the words close no frame.
+/// With `road` the stage measures heights above it (cfg.road_height, the pipeline's way): the
+/// frame's first word is taken with it.
 FrameResult run_warning(const std::vector<hls::labelling::LabelPacket>& words,
-                        const WarningConfig& cfg, std::int64_t* cycles = nullptr);
+                        const WarningConfig& cfg, std::int64_t* cycles = nullptr,
+                        const hls::warning::RoadLine* road = nullptr);
 
-/// The per-object view of the same arithmetic (hls::warning::evaluate at the host build).
-hls::warning::ObjectEval evaluate_object(const hls::labelling::Object& o, const WarningConfig& cfg);
+/// The per-object view of the same arithmetic (hls::warning::evaluate at the host build), above
+/// `road` when given.
+hls::warning::ObjectEval evaluate_object(const hls::labelling::Object& o, const WarningConfig& cfg,
+                                         const hls::warning::RoadLine* road = nullptr);
 
 }  // namespace scw::warning

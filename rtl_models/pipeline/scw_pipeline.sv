@@ -4,7 +4,9 @@
 `default_nettype none
 
 //  left raw  -> [camera L] --rect--> scw_disparity -> FIFO -> scw_road -> FIFO -> scw_labelling
-//                                                                                 -> FIFO -> fork
+//                                                              |line      -> FIFO -> fork
+//                                                              +--> FIFO -------------+
+//                                                                   (one line a frame) v
 //  right raw -> [camera R] --rect-->    fork -> FIFO -> obj (the object table, for the host)
 //                  |flag                fork -> FIFO -> scw_warning -> FIFO -> scw_result_merge
 //                  |                                                              |
@@ -33,6 +35,8 @@ module scw_pipeline #(
   parameter int unsigned ObjFifoDepth   /*verilator public*/ = 2,
   parameter int unsigned ResFifoDepth   /*verilator public*/ = 2,
   parameter int unsigned FlagFifoDepth  /*verilator public*/ = 4,
+  // road lines: frames in flight between the road stage's sof and the warning stage's first word
+  parameter int unsigned LineFifoDepth  /*verilator public*/ = 4,
   localparam int unsigned MaxWH    = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight,
   localparam int unsigned KBits    = $clog2(MaxWH) + 2 + 7,
   localparam int unsigned KCols    = ((MaxWidthPx - 1) >> GridLog2) + 2,
@@ -200,6 +204,10 @@ module scw_pipeline #(
 
   // road -> FIFO (registered like the disparity FIFO: the labelling stage decodes its head beat)
   logic             r_valid, r_ready, r_sof, r_eol, rq_valid, rq_ready;
+  logic             ln_valid, ln_ready, lq_valid, lq_ready;  // the road lines
+  logic [17:0]      ln_a;
+  logic [31:0]      ln_b;
+  logic [49:0]      lq_word;
   logic [DispW-1:0] r_data;
   logic [DispW+1:0] rq_word;
 
@@ -211,7 +219,17 @@ module scw_pipeline #(
     .in_valid_i(dq_valid), .in_ready_o(dq_ready), .in_data_i(dq_word[DispW-1:0]),
     .in_sof_i(dq_word[DispW]), .in_eol_i(dq_word[DispW+1]),
     .out_valid_o(r_valid), .out_ready_i(r_ready), .out_data_o(r_data), .out_sof_o(r_sof),
-    .out_eol_o(r_eol)
+    .out_eol_o(r_eol),
+    .line_valid_o(ln_valid), .line_ready_i(ln_ready), .line_a_o(ln_a), .line_b_o(ln_b)
+  );
+
+  // The line each frame was gated with, to the warning stage, which takes one with each frame's
+  // first object word and measures heights above it.
+  scw_fifo #(.Width(50), .Depth(LineFifoDepth)) u_line_fifo (
+    .clk_i, .rst_ni,
+    .in_valid_i(ln_valid), .in_ready_o(ln_ready), .in_data_i({ln_b, ln_a}),
+    .out_valid_o(lq_valid), .out_ready_i(lq_ready), .out_data_o(lq_word),
+    .count_o()
   );
 
   scw_fifo #(.Width(DispW + 2), .Depth(DispFifoDepth), .OutReg(1'b1)) u_road_fifo (
@@ -279,9 +297,11 @@ module scw_pipeline #(
     .cfg_baseline_q8_i, .cfg_focal_q4_i, .cfg_cu_q4_i, .cfg_cv_q4_i, .cfg_veh_x_mm_i,
     .cfg_veh_y_mm_i, .cfg_veh_z_mm_i, .cfg_tunnel_half_w_mm_i, .cfg_tunnel_h_mm_i,
     .cfg_high_mm_i, .cfg_medium_mm_i, .cfg_near_mm_i, .cfg_min_height_mm_i,
-    .cfg_d_limit_q4_i, .cfg_rule_i, .cfg_spread_i,
+    .cfg_d_limit_q4_i, .cfg_rule_i, .cfg_spread_i, .cfg_road_height_i(1'b1),
     .in_valid_i(wi_valid), .in_ready_o(wi_ready), .in_data_i(wi_word[ObjW-1:0]),
     .in_last_i(wi_word[ObjW]),
+    .road_valid_i(lq_valid), .road_ready_o(lq_ready), .road_a_i(lq_word[17:0]),
+    .road_b_i(lq_word[49:18]),
     .out_valid_o(w_valid), .out_ready_i(w_ready), .out_data_o(w_data), .out_last_o(w_last)
   );
 

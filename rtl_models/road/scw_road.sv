@@ -17,14 +17,18 @@
 //    compares use the values' integer parts (a code has no fraction), 21 bits.
 //  - The output pipeline: D0 registers the zero decisions and the beat, D1 the zeroed beat; one
 //    enable, adv = !out_valid || out_ready (sim::PipelineShell's shape).
+//  - The line output: one word a frame, the line the frame is gated with, loaded when the stage
+//    takes the frame's sof; a sof is taken only when that register is free or read in the same
+//    clock (scw_frame_check's flag rule), so no frame's line is lost. The warning stage measures
+//    heights above it.
 //  - The fit (scw_road_fit) between frames: a sof that comes after a frame's beats (`seen`) is not
 //    taken; at that edge busy loads FitClocks and counts down, the engine starts once the sums
 //    have settled, and on the clock busy goes 1 -> 0 its line and bands are installed, the sums
 //    cleared and seen cleared; the sof is taken from the next clock on. The pipeline behind keeps
 //    draining meanwhile. After reset seen is set, so the first sof forms the nominal road's
 //    bands (a fit of no pixels keeps the road).
-// in_ready depends combinationally on in_valid and in_sof (a sof waiting for the fit): upstream
-// is a registered FIFO. cfg_* are static: set them before rst_ni rises.
+// in_ready depends combinationally on in_valid, in_sof (a sof waiting for the fit) and
+// line_ready: upstream is a registered FIFO. cfg_* are static: set them before rst_ni rises.
 module scw_road #(
   parameter int unsigned Ppc        /*verilator public*/ = 1,   // disparities a beat
   parameter int unsigned MaxWidthPx /*verilator public*/ = 64,  // <= 2048
@@ -58,7 +62,12 @@ module scw_road #(
   input  logic             out_ready_i,
   output logic [DataW-1:0] out_data_o,
   output logic             out_sof_o,
-  output logic             out_eol_o
+  output logic             out_eol_o,
+  // the line each frame is gated with (hls::road::Line), one word a frame
+  output logic             line_valid_o,
+  input  logic             line_ready_i,
+  output logic [17:0]      line_a_o,
+  output logic [31:0]      line_b_o       // signed
 );
   // Shared with C++ (hls::road::kLatency, kFitClocks, kFracBits), checked at compile time by
   // sim/road_rtl.hpp.
@@ -84,11 +93,12 @@ module scw_road #(
   // ---- control: the fit between frames ---------------------------------------------------------
   logic [BusyW-1:0] busy_d, busy_q;
   logic             seen_d, seen_q;
-  logic             adv, start_fit, take, install, out_valid_q;
+  logic             adv, start_fit, take, install, out_valid_q, line_valid_q, line_free;
 
   assign adv        = !out_valid_q || out_ready_i;
   assign start_fit  = busy_q == '0 && in_valid_i && in_sof_i && seen_q;
-  assign in_ready_o = adv && busy_q == '0 && !start_fit;
+  assign line_free  = !line_valid_q || line_ready_i;
+  assign in_ready_o = adv && busy_q == '0 && !start_fit && (!in_sof_i || line_free);
   assign take       = in_valid_i && in_ready_o;
   assign install    = busy_q == BusyW'(1);
 
@@ -145,6 +155,24 @@ module scw_road #(
       gate_hi_b_q <= fit_gate_hi_b;
     end
   end
+
+  // ---- the line output --------------------------------------------------------------------------
+  logic [17:0] line_out_a_q;
+  logic [31:0] line_out_b_q;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) line_valid_q <= 1'b0;
+    else if (take && in_sof_i) line_valid_q <= 1'b1;
+    else if (line_ready_i) line_valid_q <= 1'b0;
+  end
+  always_ff @(posedge clk_i) begin
+    if (take && in_sof_i) begin
+      line_out_a_q <= line_a_q;
+      line_out_b_q <= line_b_q;
+    end
+  end
+  assign line_valid_o = line_valid_q;
+  assign line_a_o     = line_out_a_q;
+  assign line_b_o     = line_out_b_q;
 
   // ---- row registers ---------------------------------------------------------------------------
   // A sof's beat is compared with the line's values at row 0, not with the registers. Beside each

@@ -4,7 +4,7 @@
 
 // The C++ twin is scw::hls::warning::Warning (hls/warning/warning.hpp) clocked by
 // scw::sim::WarningModel, clock for clock: same in_ready, out_valid and out data every cycle.
-// One pipeline enable, en = !out_valid || out_ready (= in_ready): a word taken at an edge is in
+// One pipeline enable, en = !out_valid || out_ready: a word taken at an edge is in
 // R1 after it, in S(Latency-RuleLatency-2) Latency-2 enabled edges later, and the next enabled
 // edge folds it into the frame's accumulator; the word that closes the frame (its status word,
 // or a `last` without one) loads the output register on that edge. Stages:
@@ -20,6 +20,11 @@
 //                   judged distance, then the earlier; on close the result is the accumulator
 //                   with the status word's flags, and stream_error when the table broke the
 //                   packet rules (status without last, last without status, object count)
+// With cfg_road_height the first word of each frame (after reset or a `last`) is taken with a
+// road line from the road_* port, and waits for one (hls::warning::Warning):
+//   in_ready = en && (!first || road_valid), road_ready = en && first && in_valid;
+// the line travels with the frame's words through the rule's delay to scw_warning_object, which
+// measures the top's height above it. Without it the road port is never read.
 // Output word: sim/warning_pack.hpp. Input word: sim/labelling_pack.hpp (label_desc_t above
 // the is_status bit; a status word's objects and flags sit where area and x_min are).
 // cfg_* are static: registered without reset, so set them at least a clock before the first
@@ -48,11 +53,17 @@ module scw_warning #(
   input  logic [15:0]        cfg_d_limit_q4_i,
   input  logic               cfg_rule_i,    // hls::warning::DistanceRule: 0 closest, 1 spread
   input  logic [7:0]         cfg_spread_i,  // spread_q4: k of the spread rule, Q4.4
+  input  logic               cfg_road_height_i,  // heights above the road line of each frame
   // the labelling stage's objects, then its status word with last
   input  logic               in_valid_i,
   output logic               in_ready_o,
   input  logic [InW-1:0]     in_data_i,
   input  logic               in_last_i,
+  // with cfg_road_height: a road line (hls::road::Line) with each frame's first word
+  input  logic               road_valid_i,
+  output logic               road_ready_o,
+  input  logic [17:0]        road_a_i,
+  input  logic [31:0]        road_b_i,
   // one result per frame
   output logic               out_valid_o,
   input  logic               out_ready_i,
@@ -74,9 +85,23 @@ module scw_warning #(
     $error("scw_warning: MaxDisparityPx is 2 .. 2048 (codes in Q11.4)");
   end
 
-  logic en;
-  assign en = !out_valid_o || out_ready_i;
-  assign in_ready_o = en;
+  logic en, first_q, need_road, take;
+  assign en           = !out_valid_o || out_ready_i;
+  assign need_road    = cfg_road_height_i && first_q;
+  assign in_ready_o   = en && (!need_road || road_valid_i);
+  assign road_ready_o = en && need_road && in_valid_i;
+  assign take         = in_valid_i && in_ready_o;
+
+  // The frame's road: taken with its first word, held for the rest.
+  logic [49:0] road_q, road_w;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) first_q <= 1'b1;
+    else if (take) first_q <= in_last_i;
+  end
+  always_ff @(posedge clk_i) begin
+    if (take && need_road) road_q <= {road_b_i, road_a_i};
+  end
+  assign road_w = need_road ? {road_b_i, road_a_i} : road_q;
 
   // ---- input word ---------------------------------------------------------------------------
   scw_pkg::label_desc_t desc;
@@ -109,10 +134,11 @@ module scw_warning #(
   );
 
   logic [FW-1:0] r_fields;
+  logic [49:0] r_road;
   logic r_status, r_last, r_tc;
-  scw_warning_delay #(.Width(FW + 3), .Depth(RuleLatency)) u_rule_delay (
-    .clk_i, .en_i(en), .d_i({in_status, in_last_i, desc.d_max >= d_limit_q, fields}),
-    .q_o({r_status, r_last, r_tc, r_fields})
+  scw_warning_delay #(.Width(FW + 53), .Depth(RuleLatency)) u_rule_delay (
+    .clk_i, .en_i(en), .d_i({road_w, in_status, in_last_i, desc.d_max >= d_limit_q, fields}),
+    .q_o({r_road, r_status, r_last, r_tc, r_fields})
   );
 
   // ---- S0 -----------------------------------------------------------------------------------
@@ -120,10 +146,14 @@ module scw_warning #(
   assign addr = (r_dq < 16'(TableSize)) ? r_dq[AddrW-1:0] : AddrW'(TableSize - 1);
 
   logic [FW-1:0] s0_fields_q;
+  logic [49:0] s0_road_q;
+  logic [15:0] s0_dq_q;
   logic s0_status_q, s0_last_q, s0_meas_q, s0_tc_q;
   always_ff @(posedge clk_i) begin
     if (en) begin
       s0_fields_q <= r_fields;
+      s0_road_q   <= r_road;
+      s0_dq_q     <= r_dq;
       s0_status_q <= r_status;
       s0_last_q   <= r_last;
       // measurable: 1 px <= dq, and dq >= 0 as int16 (labelling's invalid codes)
@@ -141,7 +171,7 @@ module scw_warning #(
   logic [Stages-1:0] valid_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) valid_q <= '0;
-    else if (en) valid_q <= Stages'({valid_q, in_valid_i});
+    else if (en) valid_q <= Stages'({valid_q, take});
   end
 
   logic [FW-1:0] w_fields;
@@ -179,6 +209,10 @@ module scw_warning #(
     .y_max_i               (s0_fields_q[96 +: 16]),
     .measurable_i          (s0_meas_q),
     .too_close_i           (s0_tc_q),
+    .cfg_road_height_i,
+    .road_a_i              (s0_road_q[17:0]),
+    .road_b_i              (s0_road_q[49:18]),
+    .dq_i                  (s0_dq_q),
     .obstacle_o            (w_obst),
     .severity_o            (w_sev),
     .in_tunnel_o           (w_tun),

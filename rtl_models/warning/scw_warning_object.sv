@@ -12,7 +12,9 @@
 //   2 .. 5    S = (b * recip + 2^15) >> 16 (mm/px, Q.20)
 //   6 .. 9    the seven coordinates (mm): rshift_round(S * offset, 24)
 //   10 .. 12  x^2, y^2, z^2; 10, 11: height, the box edges relative to the vehicle, then height
-//             >= min_height and the four tunnel margins
+//             >= min_height and the four tunnel margins; beside 1 .. 9, with
+//             cfg_road_height, the top's height above the road against min_height instead
+//             (scw_warning_height), which replaces the box's at stage 44
 //   12, 13    the gaps across and up, then the gap to the tunnel
 //   13, 14    n = x^2 + y^2 + z^2; 14: in the tunnel, gap <= near
 //   15 .. 42  isqrt_round(n) (scw_warning_sqrt, one root bit per clock)
@@ -58,6 +60,11 @@ module scw_warning_object #(
   input  logic [15:0]        y_max_i,
   input  logic               measurable_i,  // 1 px <= dq < 0x8000
   input  logic               too_close_i,   // d_max >= d_limit
+  // stage 0, with cfg_road_height_i: the frame's road line and the rule's disparity
+  input  logic               cfg_road_height_i,
+  input  logic [17:0]        road_a_i,
+  input  logic [31:0]        road_b_i,
+  input  logic [15:0]        dq_i,
   // stage OutStages
   output logic               obstacle_o,
   output logic [1:0]         severity_o,
@@ -252,6 +259,18 @@ module scw_warning_object #(
   scw_warning_delay #(.Width(1), .Depth(33)) u_height_delay (
     .clk_i, .en_i, .d_i(obst_h11), .q_o(obst_h44)
   );
+
+  logic above9, above44, road_q;
+  always_ff @(posedge clk_i) road_q <= cfg_road_height_i;
+  scw_warning_height u_road_height (
+    .clk_i, .en_i,
+    .baseline_i(base_q[19:0]), .min_height_i(minh_q),
+    .road_a_i, .road_b_i, .dq_i, .y_min_i,
+    .above_o(above9)
+  );
+  scw_warning_delay #(.Width(1), .Depth(35)) u_above_delay (
+    .clk_i, .en_i, .d_i(above9), .q_o(above44)
+  );
   scw_warning_delay #(.Width(2), .Depth(30)) u_gap_delay (
     .clk_i, .en_i, .d_i({tun14, near14}), .q_o({tun44, near44})
   );
@@ -274,7 +293,7 @@ module scw_warning_object #(
   logic obst;
   logic [1:0] sev;
   always_comb begin
-    obst = meas44 && obst_h44;
+    obst = meas44 && (road_q ? above44 : obst_h44);
     if (!obst) sev = 2'd0;                                   // none
     else if (tun44) sev = le_high44 ? 2'd3 : lt_med44 ? 2'd2 : 2'd1;
     else sev = (near44 && lt_med44) ? 2'd2 : 2'd1;

@@ -21,7 +21,7 @@
 #include "Vframe_check_p2_scw_frame_check.h"
 #include "sim/components.hpp"
 #include "sim/frame_beats.hpp"
-#include "sim/frame_check_component.hpp"
+#include "sim/side_component.hpp"
 #include "sim/frame_check_model.hpp"
 #include "sim/frame_check_rtl.hpp"
 #include "sim/rtl_params.hpp"
@@ -405,7 +405,7 @@ void check_flag_backpressure(const std::vector<In<P>>& beats, const FrameCheckCo
   CHECK(errors(r.flags) == flags);
 }
 
-/// Both models inside the cycle simulator (FrameCheckComponent between FIFOs), as the pipeline
+/// Both models inside the cycle simulator (SideComponent between FIFOs), as the pipeline
 /// chain uses them: the same beats and flags come out.
 template <int P, typename M>
 std::pair<std::vector<In<P>>, std::vector<scw::hls::Packet<FrameFlag>>> run_component(
@@ -416,7 +416,7 @@ std::pair<std::vector<In<P>>, std::vector<scw::hls::Packet<FrameFlag>>> run_comp
   auto& out = s.fifo<In<P>>("checked", 2);
   auto& flags = s.fifo<Flag>("flags", 1);
   auto& src = s.add<scw::sim::Source<In<P>>>("source", in, beats, p);
-  s.add<scw::sim::FrameCheckComponent<M>>("check", std::move(model), in, out, flags);
+  s.add<scw::sim::SideComponent<M>>("check", std::move(model), in, out, flags);
   auto& sink = s.add<scw::sim::Sink<In<P>>>("sink", out, p);
   auto& fsink = s.add<scw::sim::Sink<Flag>>("flag_sink", flags, StallPattern::parse("both"));
   s.run_until(
@@ -488,7 +488,7 @@ TEST_CASE("scw_frame_check passes one beat per clock with one register of latenc
   CHECK(errors(r.flags) == std::vector<bool>(4, false));
 }
 
-TEST_CASE("FrameCheckComponent runs either model between FIFOs with the same result",
+TEST_CASE("SideComponent runs either frame check model between FIFOs with the same result",
           "[pipeline][rtl][frame_check][sim]") {
   const FrameCheckConfig cfg{12, 5};
   const auto k = cases<2>(cfg)[4];  // a frame cut short, then two good frames

@@ -9,6 +9,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -25,7 +26,10 @@
 #include "host/vectors/road_maps.hpp"
 #include "sim/frame_beats.hpp"
 #include "sim/road_model.hpp"
+#include "sim/components.hpp"
 #include "sim/road_rtl.hpp"
+#include "sim/side_component.hpp"
+#include "sim/simulator.hpp"
 #include "sim/verilated_harness.hpp"
 #include "tests/common/twin_check.hpp"
 
@@ -622,4 +626,68 @@ TEST_CASE("scw_road's widest row values: the extreme configuration check_config 
   const auto t = trace_kernel<Params1>(beats, cfg);
   REQUIRE(t.zeroed > 1000);
   check_beats<Vroad_p1, Params1>(beats, cfg);
+}
+
+namespace {
+
+/// The stage with its line output between FIFOs (SideComponent, as the pipeline wires it), the
+/// lines read slowly through a one-word FIFO so sofs wait for it. Returns the beats out, the
+/// lines out and the cycles the run took.
+template <typename M, typename Params>
+std::tuple<std::vector<typename Params::out_beat>, std::vector<scw::hls::Packet<Line>>,
+           std::int64_t>
+run_lines(M model, const std::vector<typename Params::in_beat>& beats, std::size_t frames,
+          const StallPattern& p) {
+  using In = typename Params::in_beat;
+  using Out = typename Params::out_beat;
+  using L = scw::hls::Packet<Line>;
+  scw::sim::Simulator s;
+  auto& in = s.fifo<In>("in", 2);
+  auto& out = s.fifo<Out>("out", 2);
+  auto& lines = s.fifo<L>("lines", 1);
+  auto& src = s.add<scw::sim::Source<In>>("source", in, beats, p);
+  s.add<scw::sim::SideComponent<M>>("road", std::move(model), in, out, lines);
+  auto& sink = s.add<scw::sim::Sink<Out>>("sink", out, p);
+  auto& lsink = s.add<scw::sim::Sink<L>>("line_sink", lines, StallPattern::parse("random:9"));
+  s.run_until([&] { return src.done() && sink.beats().size() == beats.size() &&
+                           lsink.beats().size() == frames; },
+              2'000'000);
+  return {sink.beats(), lsink.beats(), s.cycle()};
+}
+
+}  // namespace
+
+TEST_CASE("scw_road's line output: each frame's road, read with backpressure, like the model",
+          "[road][rtl]") {
+  RoadScene scene = small_scene(1.2);
+  scene.noise = 0.3;
+  scene.objects = 2;
+  const RoadConfig cfg = scw::fixtures::road_config(scene, 0.8, 2.0, 20);
+  const auto maps = road_maps(scene, 40, 5);
+  const auto beats = map_beats<Params2>(maps);
+  const auto t = trace_kernel<Params2>(beats, cfg);
+  REQUIRE(roads_used(t) >= 3);
+  REQUIRE(t.lines.size() == maps.size());  // one fit (or the nominal road) at each sof
+  std::vector<typename Params2::out_beat> want(beats.size());
+  scw::hls::road::Road<Params2> k(cfg);
+  scw::hls::road::road_frame(k, beats.data(), want.data(), static_cast<int>(beats.size()));
+  for (const auto& pattern : {StallPattern{}, StallPattern::parse("random:3")}) {
+    INFO("stalls " << pattern.name());
+    const auto [cb, cl, cc] = run_lines<scw::sim::RoadModel<Params2>, Params2>(
+        scw::sim::RoadModel<Params2>(cfg), beats, maps.size(), pattern);
+    const auto [rb, rl, rc] = run_lines<scw::sim::RoadSideRtl<Vroad_p2, Params2>, Params2>(
+        scw::sim::RoadSideRtl<Vroad_p2, Params2>("road_lines", cfg), beats, maps.size(),
+        pattern);
+    CHECK(cc == rc);  // the same cycles, with sofs held for the line register
+    CHECK(cb == want);
+    CHECK(rb == want);
+    REQUIRE(cl.size() == t.lines.size());
+    REQUIRE(rl.size() == t.lines.size());
+    for (std::size_t f = 0; f < t.lines.size(); ++f) {
+      INFO("frame " << f);
+      CHECK(cl[f].data == t.lines[f]);
+      CHECK(rl[f].data == t.lines[f]);
+      CHECK(rl[f].last);
+    }
+  }
 }

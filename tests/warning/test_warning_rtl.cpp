@@ -24,7 +24,12 @@
 #include "Vwarning_sqrt.h"
 #include "Vwarning_sqrt_scw_warning_sqrt.h"
 #include "hls/warning/warning_params.hpp"
+#include "host/reference/road_ref.hpp"
+#include "host/warning/reference.hpp"
+#include "host/warning/run_model.hpp"
+#include "hls/warning/warning.hpp"
 #include "host/warning/setup.hpp"
+#include "sim/join.hpp"
 #include "sim/stream_check.hpp"
 #include "sim/warning_model.hpp"
 #include "sim/warning_rtl.hpp"
@@ -1097,4 +1102,156 @@ TEST_CASE("scw_warning_rule equals rule_disparity bit for bit", "[warning][rtl]"
   CHECK(moved > 1000);
   CHECK(saturated > 100);
   CHECK(zero_v > 100);
+}
+
+namespace {
+
+/// A road line a frame: a flat road seen from 0.8 .. 2.5 m with a pitch of -3 .. 3 degrees
+/// (camera `s`), and now and then the port's extremes (a = 0, the widest slope, b at +-2^31).
+std::vector<hw::RoadLine> random_roads(const WarningSetup& s, int frames, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> height(0.8, 2.5), pitch(-0.052, 0.052), u(0, 1);
+  std::vector<hw::RoadLine> roads;
+  for (int f = 0; f < frames; ++f) {
+    const double a_px = s.baseline_m / height(rng);
+    const double horizon = s.cv_px - s.focal_px * std::tan(pitch(rng));
+    hw::RoadLine r{static_cast<std::int32_t>(std::lround(a_px * scw::hls::road::kPxUnit)),
+                   static_cast<std::int32_t>(std::lround(-a_px * horizon *
+                                                         scw::hls::road::kPxUnit))};
+    const double x = u(rng);
+    if (x < 0.05) r.a = 0;
+    else if (x < 0.1) r.a = (1 << 18) - 1;
+    else if (x < 0.13) r.b = INT32_MIN;
+    else if (x < 0.16) r.b = INT32_MAX;
+    roads.push_back(r);
+  }
+  return roads;
+}
+
+}  // namespace
+
+TEST_CASE("scw_warning with a road line a frame equals the model, heights above the road",
+          "[warning][rtl]") {
+  const WarningSetup s = setup_of(kKarlsruhe, 64.0);
+  for (const RuleCase& rule : {kRuleCases[0], kRuleCases[1]}) {
+    DYNAMIC_SECTION(rule.name) {
+      WarningConfig cfg = with_rule(scw::host::warning::to_fixed(s), rule);
+      cfg.road_height = true;
+      // Well-formed tables (a road line goes with each `last`-closed frame).
+      TableGen gen(s, cfg, ParamsA::kTableSize, 3000 + rule.spread_q4);
+      std::vector<std::vector<LabelPacket>> frames;
+      std::vector<LabelPacket> words;
+      for (int f = 0; f < 40; ++f) {
+        std::vector<Object> objects(static_cast<std::size_t>(f % 13));
+        for (auto& o : objects) o = gen.next();
+        scw::hls::labelling::FrameStatus st;
+        st.objects = static_cast<std::uint32_t>(objects.size());
+        frames.push_back(scw::warning::table_words(objects, st));
+        words.insert(words.end(), frames.back().begin(), frames.back().end());
+      }
+      const auto roads = random_roads(s, static_cast<int>(frames.size()), 77 + rule.spread_q4);
+      std::vector<scw::hls::Packet<hw::RoadLine>> lines;
+      for (const auto& r : roads) lines.push_back({r, true});
+
+      // Each frame alone through the stage's HLS top with its line, and without one (box
+      // heights).
+      const auto alone = [](const std::vector<LabelPacket>& w, const WarningConfig& c,
+                            const hw::RoadLine* road) {
+        hw::Warning<ParamsA> k(c);
+        std::vector<ResultPacket> out(w.size());
+        REQUIRE(hw::warning_frame(k, w.data(), static_cast<int>(w.size()), out.data(), road) == 1);
+        return out[0].data;
+      };
+      WarningConfig box = cfg;
+      box.road_height = false;
+      std::vector<FrameResult> expected;
+      int differ = 0, above = 0, below = 0;
+      for (std::size_t f = 0; f < frames.size(); ++f) {
+        expected.push_back(alone(frames[f], cfg, &roads[f]));
+        if (expected.back() != alone(frames[f], box, nullptr)) ++differ;
+        for (const auto& w : frames[f]) {
+          if (w.data.is_status) continue;
+          const ObjectEval e = hw::evaluate<ParamsA>(w.data.object, cfg, roads[f]);
+          if (!e.measurable) continue;
+          // The floating-point reference with the same road in px agrees away from the
+          // threshold (its disparity is the rule's unrounded one).
+          const scw::reference::RoadLinePx px = scw::reference::to_px(roads[f]);
+          const auto ref = scw::host::warning::evaluate_ref(w.data.object, s, &px);
+          // Compared where both place the object at one disparity (TableGen's sums are not
+          // always an object's) and the height is not at the threshold.
+          if (roads[f].a > 0 && std::abs(ref.disparity_px - e.d_q4 / 16.0) < 1.0 / 16 &&
+              std::abs(ref.height_m - s.min_height_m) > 0.05 * std::abs(ref.height_m) + 0.02) {
+            INFO("frame " << f << " road " << roads[f].a << " " << roads[f].b << " y_min "
+                          << w.data.object.y_min << " d " << ref.disparity_px << " dq "
+                          << e.d_q4 << " height ref " << ref.height_m << " fixed "
+                          << e.height_mm);
+            CHECK(ref.obstacle == e.obstacle);
+          }
+          (e.obstacle ? above : below)++;
+        }
+      }
+      CHECK(differ > 0);  // the road changes some frames' results
+      CHECK(above > 0);
+      CHECK(below > 0);
+      for (const auto& pattern : StallPattern::all(3)) {
+        INFO("stalls " << pattern.name());
+        scw::sim::WarningRoadModel<ParamsA> cpp(cfg);
+        auto rtl = scw::sim::make_warning_road_rtl<Vwarning_a, ParamsA>("warning", cfg);
+        const auto rc = scw::sim::run_join(cpp, words, lines, pattern, expected.size(), 400'000);
+        const auto rr = scw::sim::run_join(rtl, words, lines, pattern, expected.size(), 400'000);
+        scw::test::check_twin_runs(rc, rr);
+        REQUIRE(rr.out.size() == expected.size());
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+          const FrameResult& g = rr.out[i].data;
+          const FrameResult& x = expected[i];
+          INFO("frame " << i << ": got severity " << int(g.severity) << " index " << g.index
+                        << " objects " << g.objects << " obstacles " << g.obstacles << " d "
+                        << g.distance_mm << " err " << g.stream_error << "; expected "
+                        << int(x.severity) << " " << x.index << " " << x.objects << " "
+                        << x.obstacles << " " << x.distance_mm << " " << x.stream_error);
+          CHECK(g == x);
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("scw_warning waits for a frame's road line and takes it with the first word only",
+          "[warning][rtl]") {
+  const WarningSetup s = setup_of(kThesis, 64.0);
+  WarningConfig cfg = scw::host::warning::to_fixed(s);
+  cfg.road_height = true;
+  TableGen gen(s, cfg, ParamsA::kTableSize, 4242);
+  const auto words = gen.frames(6, 5);
+  scw::sim::WarningRoadModel<ParamsA> cpp(cfg);
+  auto rtl = scw::sim::make_warning_road_rtl<Vwarning_a, ParamsA>("warning", cfg);
+  const scw::hls::Packet<hw::RoadLine> line{{29491, -29491 * 240}, true};
+  // No line: the first word waits, and so does the stage.
+  for (int c = 0; c < 5; ++c) {
+    const auto oc = cpp.eval(true, words[0], false, {}, true);
+    const auto orr = rtl.eval(true, words[0], false, {}, true);
+    CHECK_FALSE(oc.a_ready);
+    CHECK_FALSE(orr.a_ready);
+    CHECK(oc.b_ready == orr.b_ready);
+    CHECK(oc.b_ready);  // it would take one
+    cpp.tick();
+    rtl.tick();
+  }
+  // With one, both are taken together; the frame's next words take none.
+  auto oc = cpp.eval(true, words[0], true, line, true);
+  auto orr = rtl.eval(true, words[0], true, line, true);
+  CHECK(oc.a_ready);
+  CHECK(orr.a_ready);
+  CHECK(oc.b_ready);
+  CHECK(orr.b_ready);
+  cpp.tick();
+  rtl.tick();
+  if (!words[0].last) {
+    oc = cpp.eval(true, words[1], true, line, true);
+    orr = rtl.eval(true, words[1], true, line, true);
+    CHECK(oc.a_ready);
+    CHECK(orr.a_ready);
+    CHECK_FALSE(oc.b_ready);
+    CHECK_FALSE(orr.b_ready);
+  }
 }

@@ -106,6 +106,9 @@ module tb_road_replay #(
   logic [DataW-1:0] out_data;
   assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
 
+  logic        line_valid;  // read every clock: not part of the set
+  logic [17:0] line_a;
+  logic [31:0] line_b;
   scw_road #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)
   ) u_dut (
@@ -118,7 +121,9 @@ module tb_road_replay #(
     .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_beat[DataW-1:0]),
     .in_sof_i(in_beat[DataW]), .in_eol_i(in_beat[DataW+1]),
     .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
-    .out_sof_o(out_sof), .out_eol_o(out_eol)
+    .out_sof_o(out_sof), .out_eol_o(out_eol),
+    // the line output is always read here (the set checks the disparities it leaves)
+    .line_valid_o(line_valid), .line_ready_i(1'b1), .line_a_o(line_a), .line_b_o(line_b)
   );
 
   // Names beat `k` by frame, row and first column, and the first pixel that differs with its

@@ -75,6 +75,7 @@ module tb_warning_replay #(
   logic [OutW-1:0] out_data;
   assign out_ready = ((cyc % 7) inside {0, 1, 3, 6}) || stalls == 0;
 
+  logic road_ready;  // never asked for a line here
   scw_warning #(.MaxDisparityPx(MaxDisparityPx)) u_dut (
     .clk_i(clk), .rst_ni(rst_n),
     .cfg_baseline_q8_i(20'(baseline_q8)), .cfg_focal_q4_i(16'(focal_q4)),
@@ -85,6 +86,9 @@ module tb_warning_replay #(
     .cfg_high_mm_i(16'(high_mm)), .cfg_medium_mm_i(16'(medium_mm)),
     .cfg_near_mm_i(16'(near_mm)), .cfg_min_height_mm_i(16'(min_height_mm)),
     .cfg_d_limit_q4_i(16'(d_limit_q4)), .cfg_rule_i(1'(rule)), .cfg_spread_i(8'(spread_q4)),
+    // the sets judge box heights: no road line comes with their frames
+    .cfg_road_height_i(1'b0), .road_valid_i(1'b0), .road_ready_o(road_ready),
+    .road_a_i(18'd0), .road_b_i(32'd0),
     .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_word[InW-1:0]),
     .in_last_i(in_word[InW]),
     .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
