@@ -1,353 +1,57 @@
 // SPDX-License-Identifier: Apache-2.0
-// `scw vectors rectify`: writes a golden vector set of the rectify stage (raw pixels + map in,
-// rectified pixels out), produced by the Verilated scw_rectify and checked against the C++
-// model and the integer reference.
-#include <algorithm>
-#include <cstdint>
-#include <filesystem>
-#include <iomanip>
+// `scw vectors rectify`: writes a golden vector set of the rectify stage
+// (host/vectors/rectify_set.hpp), with the Verilated scw_rectify built for the CLI.
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "Vcli_rectify_p2.h"
 #include "Vcli_rectify_p2_scw_rectify.h"
-#include "hls/rectify/map_taps.hpp"
-#include "hls/rectify/rectify_params.hpp"
 #include "host/cli/commands.hpp"
-#include "host/io/image_file.hpp"
-#include "host/rectify/calibration.hpp"
-#include "host/rectify/fixed_map.hpp"
-#include "host/rectify/test_maps.hpp"
-#include "host/reference/rectify_ref.hpp"
-#include "host/vectors/vector_set.hpp"
-#include "sim/frame_beats.hpp"
+#include "host/vectors/rectify_set.hpp"
 #include "sim/join.hpp"
-#include "sim/pack.hpp"
-#include "sim/rectify_model.hpp"
 #include "sim/rectify_rtl.hpp"
 #include "sim/rtl_params.hpp"
 
 namespace scw::cli {
 namespace {
 
-using hls::rectify::MapPoint;
+namespace vec = scw::vectors;
+using RtlParams = vec::RectifyRtlParams;
+static_assert(sim::rectify_params_match<Vcli_rectify_p2_scw_rectify, RtlParams>());
 
-// The golden-vector configuration of the stage: frames up to 128 x 96, a window of 32 raw rows
-// (enough for the chessboard calibration over a 128-px-wide ROI), F = 5 as OpenCV's INTER_BITS.
-constexpr int kMaxWidthPx = 128;
-constexpr int kMaxHeight = 96;
-constexpr int kRows = 32;
-constexpr int kFracBits = 5;
-constexpr int kRtlPpc = 2;  // the one beat width Verilated for the CLI
-template <int P>
-using VecParams = hls::rectify::RectifyParams<P, kMaxWidthPx, kMaxHeight, kRows, kFracBits>;
-static_assert(sim::rectify_params_match<Vcli_rectify_p2_scw_rectify, VecParams<kRtlPpc>>());
-
-// Synthetic sets: a small frame; the chessboard sets: a crop of the bundled 640 x 480 pair.
-constexpr int kSynthWidth = 64;
-constexpr int kSynthHeight = 32;
-constexpr int kCropWidth = 128;
-constexpr int kCropHeight = 96;
-
-struct Options {
-  std::string preset;
-  int ppc = kRtlPpc;
-  std::string engine = "rtl";
-  std::string stalls = "both";
-  std::string out;
-  std::string data_dir = "data/chessboard";
-  std::vector<int> roi{352,
-                       112};  // chessboard: top-left of the rectified output ROI (on the board)
-};
-
-/// One frame to rectify: raw image, map (same size), and which other maps share the lead.
-struct Frame {
-  cv::Mat raw;                              // 8UC1, width x height
-  std::vector<MapPoint> map;                // width * height, raster order
-  std::vector<rectify::RowWindow> windows;  // every map the stage's lead is planned for
-  std::string description;
-};
-
-/// A 64 x 32 grey test card: 8 x 8 checks, a slow gradient and a fixed integer hash for
-/// texture, so every output pixel's four taps differ and the rounding is exercised.
-cv::Mat pattern_image(int w, int h) {
-  cv::Mat img(h, w, CV_8UC1);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      std::uint32_t n =
-          static_cast<std::uint32_t>(x) * 73856093u ^ static_cast<std::uint32_t>(y) * 19349663u;
-      n = (n ^ (n >> 13)) * 0x5bd1e995u;
-      n ^= n >> 15;
-      const int check = ((x >> 3) + (y >> 3)) & 1 ? 170 : 40;
-      const int v = check + (x + 2 * y) / 2 + static_cast<int>(n & 31u);
-      img.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(std::min(v, 255));
-    }
-  return img;
+vec::RectifyRtlRun run_rtl(const hls::rectify::RectifyConfig& cfg,
+                           const std::vector<RtlParams::pixel_beat>& raw,
+                           const std::vector<RtlParams::map_beat>& map,
+                           const sim::StallPattern& pattern, std::size_t beats) {
+  auto rtl = sim::make_rectify_rtl<Vcli_rectify_p2, RtlParams>("rectify", cfg);
+  vec::RectifyRtlRun r;
+  r.run = sim::run_join(rtl, raw, map, pattern, beats);
+  r.err = static_cast<std::uint8_t>(rtl.dut().err_o);
+  return r;
 }
 
-rectify::FixedMap as_fixed(const std::vector<MapPoint>& m, int w, int h) {
-  rectify::FixedMap f;
-  f.width = w;
-  f.height = h;
-  f.frac_bits = kFracBits;
-  f.points = m;
-  return f;
-}
-
-Frame synthetic(const std::string& preset) {
-  constexpr int w = kSynthWidth, h = kSynthHeight;
-  Frame f;
-  f.raw = pattern_image(w, h);
-  std::ostringstream d;
-  d << "scw_rectify: " << w << "x" << h << " test card (8x8 checks, gradient, hashed texture) ";
-  if (preset == "shift") {
-    f.map = rectify::shift_map(w, h, kFracBits, 4.3, 2.6);
-    d << "shifted: output (u, v) samples raw (u + 4.3, v + 2.6); the right columns and bottom "
-         "rows sample outside the image (zeros)";
-  } else if (preset == "rotation") {
-    f.map = rectify::rotation_map(w, h, kFracBits, 12.0, (w - 1) / 2.0, (h - 1) / 2.0);
-    d << "turned by 12 degrees about its centre";
-  } else {
-    f.map = rectify::barrel_map(w, h, kFracBits, -0.3);
-    d << "with strong barrel distortion undone (k1 = -0.3, r = 1 at the corners)";
-  }
-  f.windows = {rectify::row_window(as_fixed(f.map, w, h))};
-  f.description = d.str();
-  return f;
-}
-
-cv::Mat read_grey(const std::filesystem::path& p) {
-  if (!std::filesystem::exists(p))
-    throw std::runtime_error("no '" + p.string() +
-                             "'; the chessboard sets need data/chessboard (give --data-dir)");
-  return host::io::read_grey_image(p);
-}
-
-/// One camera of the chessboard pair, cropped: the map of the output ROI expressed relative to
-/// a raw crop of the same size that holds every tap the ROI reads.
-struct Crop {
-  cv::Mat raw;                         // the raw crop
-  std::vector<MapPoint> map;           // relative to the crop, clamped as the host does
-  cv::Point origin;                    // crop's top-left in the raw image
-  std::vector<std::uint8_t> full_ref;  // the ROI rectified from the whole raw image
-};
-
-Crop crop_camera(const cv::Mat& raw, const rectify::FixedMap& full, cv::Rect roi,
-                 const std::string& name) {
-  constexpr int s = 1 << kFracBits;
-  std::vector<MapPoint> m;
-  m.reserve(static_cast<std::size_t>(roi.area()));
-  int x_lo = full.width, x_hi = -1, y_lo = full.height, y_hi = -1;
-  for (int v = roi.y; v < roi.y + roi.height; ++v)
-    for (int u = roi.x; u < roi.x + roi.width; ++u) {
-      const MapPoint p = full.at(u, v);
-      m.push_back(p);
-      const auto t = hls::rectify::decode_taps<kFracBits>(p, full.width, full.height);
-      // A tap is read when its column and its row both carry weight inside the image.
-      for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx)
-          if ((dy ? t.row1 : t.row0) && (dx ? t.col1 : t.col0)) {
-            x_lo = std::min(x_lo, t.x0 + dx);
-            x_hi = std::max(x_hi, t.x0 + dx);
-            y_lo = std::min(y_lo, t.y0 + dy);
-            y_hi = std::max(y_hi, t.y0 + dy);
-          }
-    }
-  if (x_hi < 0) throw std::runtime_error(name + ": the ROI samples no raw pixel at all");
-  const auto fit = [&](int lo, int hi, int size, int limit, const char* axis) {
-    if (hi - lo + 1 > size)
-      throw std::runtime_error(name + ": the ROI's taps span raw " + axis + " " +
-                               std::to_string(lo) + " .. " + std::to_string(hi) +
-                               ", more than the " + std::to_string(size) +
-                               "-px crop; pick another --roi");
-    return std::clamp((lo + hi + 1) / 2 - size / 2, 0, limit - size);  // centred on the taps
-  };
-  Crop c;
-  c.origin = {fit(x_lo, x_hi, roi.width, full.width, "columns"),
-              fit(y_lo, y_hi, roi.height, full.height, "rows")};
-  c.raw = raw(cv::Rect(c.origin, roi.size())).clone();
-  // Shifting by whole pixels is exact; positions the host clamped outside the full image stay
-  // outside the crop, and clamping again to the crop's range changes no sample.
-  c.map = m;
-  for (auto& p : c.map) {
-    p.x -= c.origin.x * s;
-    p.y -= c.origin.y * s;
-    p = rectify::clamp_point(p, roi.width, roi.height, kFracBits);
-  }
-  const cv::Mat whole = raw.isContinuous() ? raw : raw.clone();
-  c.full_ref = reference::rectify_reference(whole.ptr<std::uint8_t>(), whole.cols, whole.rows,
-                                            m.data(), roi.width, roi.height, kFracBits);
-  const auto crop_ref =
-      reference::rectify_reference(c.raw.ptr<std::uint8_t>(), roi.width, roi.height, c.map.data(),
-                                   roi.width, roi.height, kFracBits);
-  if (crop_ref != c.full_ref)
-    throw std::logic_error(name +
-                           ": the ROI rectified from the crop differs from the ROI "
-                           "rectified from the whole image; the crop misses taps");
-  return c;
-}
-
-Frame chessboard(const Options& o, bool right) {
-  const std::filesystem::path dir(o.data_dir);
-  const cv::Mat left_raw = read_grey(dir / "left01.jpg");
-  const cv::Mat right_raw = read_grey(dir / "right01.jpg");
-  const std::string calib_name = "derived_stereo_calibration_helper.yml";
-  const auto calib = rectify::load_stereo_calibration((dir / calib_name).string(), left_raw.size());
-  for (const cv::Mat* img : {&left_raw, &right_raw})
-    if (img->size() != calib.image_size)
-      throw std::runtime_error("the chessboard images are not the calibration's size");
-  const auto rect = rectify::rectify_calibration(calib);
-  const auto full_l = rectify::quantise_map(rect.map1_x, rect.map1_y, kFracBits);
-  const auto full_r = rectify::quantise_map(rect.map2_x, rect.map2_y, kFracBits);
-  const cv::Rect roi(o.roi[0], o.roi[1], kCropWidth, kCropHeight);
-  if ((roi & cv::Rect(0, 0, full_l.width, full_l.height)) != roi)
-    throw std::runtime_error("--roi " + std::to_string(roi.x) + " " + std::to_string(roi.y) +
-                             ": the " + std::to_string(kCropWidth) + " x " +
-                             std::to_string(kCropHeight) + " ROI must lie inside the " +
-                             std::to_string(full_l.width) + " x " + std::to_string(full_l.height) +
-                             " rectified image");
-  const Crop cl = crop_camera(left_raw, full_l, roi, "chessboard left");
-  const Crop cr = crop_camera(right_raw, full_r, roi, "chessboard right");
-  const Crop& c = right ? cr : cl;
-
-  Frame f;
-  f.raw = c.raw;
-  f.map = c.map;
-  // Left and right share one lead, as the host runs a stereo pair, so both sets have one config.
-  f.windows = {rectify::row_window(as_fixed(cl.map, roi.width, roi.height)),
-               rectify::row_window(as_fixed(cr.map, roi.width, roi.height))};
-  std::ostringstream d;
-  d << "scw_rectify: data/chessboard/" << (right ? "right01.jpg" : "left01.jpg")
-    << " rectified with " << calib_name << " (stereoRectify alpha " << rect.alpha
-    << ", CALIB_ZERO_DISPARITY): output ROI x " << roi.x << " y " << roi.y << " " << roi.width
-    << "x" << roi.height << " of the " << full_l.width << "x" << full_l.height
-    << " rectified image; raw input = the crop at x " << c.origin.x << " y " << c.origin.y
-    << ", map shifted to it (equal to rectifying the whole image)";
-  f.description = d.str();
-  return f;
-}
-
-nlohmann::json map_beat_layout(int p, int coord_bits) {
-  nlohmann::json fields = nlohmann::json::array();
-  for (int i = 0; i < p; ++i) {
-    fields.push_back(
-        {{"name", "x" + std::to_string(i)}, {"lsb", 2 * i * coord_bits}, {"bits", coord_bits}});
-    fields.push_back({{"name", "y" + std::to_string(i)},
-                      {"lsb", (2 * i + 1) * coord_bits},
-                      {"bits", coord_bits}});
-  }
-  const int flags = 2 * p * coord_bits;
-  fields.push_back({{"name", "sof"}, {"lsb", flags}, {"bits", 1}});
-  fields.push_back({{"name", "eol"}, {"lsb", flags + 1}, {"bits", 1}});
-  return {{"pixels_per_beat", p},
-          {"coord_bits", coord_bits},
-          {"frac_bits", kFracBits},
-          {"signed", true},
-          {"fields", fields}};
-}
-
-template <typename Beat>
-std::vector<sim::Bits> packed(const std::vector<Beat>& beats) {
-  std::vector<sim::Bits> v;
-  v.reserve(beats.size());
-  for (const auto& b : beats) v.push_back(sim::pack(b));
-  return v;
-}
-
-/// Checks one engine's run: handshake rules kept, no time-out, no error bits, and every beat
-/// equal to the reference; throws naming the engine and the first wrong beat otherwise.
-template <typename Out>
-void check_run(const std::string& engine, const sim::RunResult<Out>& r, std::uint8_t err,
-               const std::vector<Out>& expect, int cols) {
-  const auto fail = [&](const std::string& what) {
-    throw std::runtime_error("vectors rectify: " + engine + ": " + what);
-  };
-  if (r.timed_out) fail("timed out after " + std::to_string(r.cycles) + " cycles");
-  if (!r.violations.empty()) fail("handshake rule broken: " + r.violations.front());
-  if (err != 0) fail("error bits " + std::to_string(err) + " set on a well-formed frame");
-  if (r.out.size() != expect.size())
-    fail(std::to_string(r.out.size()) + " output beats, expected " + std::to_string(expect.size()));
-  for (std::size_t i = 0; i < expect.size(); ++i)
-    if (r.out[i] != expect[i])
-      fail("beat " + std::to_string(i) + " (row " + std::to_string(i / cols) + ", beat " +
-           std::to_string(i % cols) + ") is " + sim::pack(r.out[i]).hex() +
-           ", the integer reference gives " + sim::pack(expect[i]).hex());
-}
-
-template <int P>
-void run(const Options& o, const Frame& f) {
-  using Params = VecParams<P>;
-  using PixelBeat = typename Params::pixel_beat;
-  using MapBeat = typename Params::map_beat;
-  const int w = f.raw.cols, h = f.raw.rows;
-  if (w > kMaxWidthPx || h > kMaxHeight || w % P != 0 || w / P < 2)
-    throw std::logic_error("vectors rectify: frame does not fit the vector configuration");
-  const auto plan = rectify::plan_for_stage(f.windows, kRows, "vectors rectify " + o.preset);
-  const hls::rectify::RectifyConfig cfg{w, h, plan.lead_rows};
-
-  const cv::Mat raw = f.raw.isContinuous() ? f.raw : f.raw.clone();
-  const auto raw_beats = sim::frame_beats_of<PixelBeat>(raw.ptr<std::uint8_t>(), w, h);
-  const auto map_beats = sim::frame_beats_of<MapBeat>(f.map.data(), w, h);
-  const auto ref = reference::rectify_reference(raw.ptr<std::uint8_t>(), w, h, f.map.data(), w, h,
-                                                Params::kFracBits);
-  const auto expect = sim::frame_beats_of<PixelBeat>(ref.data(), w, h);
-  const auto pattern = sim::StallPattern::parse(o.stalls);
-
-  // The C++ model always runs; the RTL when asked (only P = 2 is Verilated for the CLI).
-  auto cpp = std::make_unique<sim::RectifyModel<Params>>(cfg);
-  const auto rc = sim::run_join(*cpp, raw_beats, map_beats, pattern, expect.size());
-  check_run("C++ model", rc, cpp->kernel().error(), expect, w / P);
-  std::cout << "C++ model: " << rc.out.size() << " beats equal the integer reference (" << rc.cycles
-            << " cycles, stalls " << pattern.name() << ")\n";
-  if (o.engine == "rtl") {
-    if constexpr (P == kRtlPpc) {
-      auto rtl = sim::make_rectify_rtl<Vcli_rectify_p2, Params>("rectify", cfg);
-      const auto rr = sim::run_join(rtl, raw_beats, map_beats, pattern, expect.size());
-      check_run("RTL", rr, static_cast<std::uint8_t>(rtl.dut().err_o), expect, w / P);
-      const std::string diff = sim::first_difference(rc.trace, rr.trace, "C++ model", "RTL");
-      if (!diff.empty()) throw std::runtime_error("vectors rectify: cycle traces differ: " + diff);
-      std::cout << "RTL: " << rr.out.size() << " beats equal the integer reference and the C++ "
-                << "model, cycle for cycle\n";
-    } else {
-      throw std::runtime_error(
-          "vectors rectify: the CLI Verilates scw_rectify at P = " + std::to_string(kRtlPpc) +
-          " only; use --engine cpp for P = " + std::to_string(P));
-    }
-  }
-
-  nlohmann::json config = {{"width", w},
-                           {"height", h},
-                           {"ppc", P},
-                           {"frac_bits", Params::kFracBits},
-                           {"coord_bits", Params::kCoordBits},
-                           {"rows", Params::kRows},
-                           {"lead_rows", plan.lead_rows},
-                           {"latency", Params::kLatency},
-                           {"max_width_px", Params::kMaxWidthPx},
-                           {"max_height", Params::kMaxHeight}};
-  vectors::VectorWriter vw(o.out, "rectify", config, f.description);
-  vw.add_image("input.png", "input", f.raw);
-  vw.add_hex("input.hex", "input", packed(raw_beats), vectors::pixel_beat_layout(P, 8));
-  vw.add_hex("map.hex", "input", packed(map_beats), map_beat_layout(P, Params::kCoordBits));
-  vw.add_hex("expected.hex", "expected", packed(expect), vectors::pixel_beat_layout(P, 8));
-  cv::Mat out_img(h, w, CV_8UC1);
-  std::copy(ref.begin(), ref.end(), out_img.data);
-  vw.add_image("expected.png", "expected", out_img);
-  vw.finish();
-  std::cout << "wrote " << o.out << "/ (" << w << "x" << h << ", P = " << P << ", lead "
-            << plan.lead_rows << " rows, " << plan.rows_needed << " of " << kRows
-            << " raw rows in flight)\n";
+void print(const vec::RectifySetSummary& s, const std::string& out) {
+  std::cout << "C++ model: " << s.beats << " beats equal the integer reference (" << s.cycles
+            << " cycles, stalls " << s.stalls << ")\n";
+  if (s.rtl)
+    std::cout << "RTL: " << s.rtl_beats << " beats equal the integer reference and the C++ "
+              << "model, cycle for cycle\n";
+  std::cout << "wrote " << out << "/ (" << s.width << "x" << s.height << ", P = " << s.ppc
+            << ", lead " << s.lead_rows << " rows, " << s.rows_needed << " of "
+            << vec::kRectifyVecRows << " raw rows in flight)\n";
 }
 
 }  // namespace
 
 void add_vectors_rectify_command(CLI::App& vectors) {
+  struct Options {
+    std::string preset, out;
+    int ppc = vec::kRectifyVecRtlPpc;
+    std::string engine = "rtl", stalls = "both", data_dir = "data/chessboard";
+    std::vector<int> roi{352, 112};  // chessboard: top-left of the rectified ROI (on the board)
+  };
   auto o = std::make_shared<Options>();
   auto* cmd = vectors.add_subcommand(
       "rectify", "Write a rectify golden vector set (raw + map in, rectified pixels out)");
@@ -355,8 +59,7 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                   "shift, rotation, barrel (64x32 test card) or chessboard_left, "
                   "chessboard_right (128x96 crop of the bundled pair, real calibration)")
       ->required()
-      ->check(
-          CLI::IsMember({"shift", "rotation", "barrel", "chessboard_left", "chessboard_right"}));
+      ->check(CLI::IsMember(vec::rectify_presets()));
   cmd->add_option("--ppc", o->ppc, "Pixels per beat")->check(CLI::IsMember({1, 2, 4}));
   cmd->add_option("--engine", o->engine,
                   "rtl: expected output from the Verilated stage (P = 2), also checked against "
@@ -371,24 +74,12 @@ void add_vectors_rectify_command(CLI::App& vectors) {
   cmd->add_option("--roi", o->roi, "Chessboard: top-left X Y of the 128x96 rectified ROI")
       ->expected(2);
   cmd->callback([o] {
-    sim::StallPattern::parse(o->stalls);  // reject a bad pattern before any work
-    if (o->engine == "rtl" && o->ppc != kRtlPpc)
-      throw std::runtime_error(
-          "vectors rectify: the CLI Verilates scw_rectify at P = " + std::to_string(kRtlPpc) +
-          " only; use --engine cpp for P = " + std::to_string(o->ppc));
-    const bool chess = o->preset.rfind("chessboard", 0) == 0;
-    const Frame f = chess ? chessboard(*o, o->preset == "chessboard_right") : synthetic(o->preset);
-    switch (o->ppc) {
-      case 1:
-        run<1>(*o, f);
-        break;
-      case 2:
-        run<2>(*o, f);
-        break;
-      default:
-        run<4>(*o, f);
-        break;
-    }
+    const auto stalls = sim::StallPattern::parse(o->stalls);  // a bad pattern before any work
+    const bool rtl = o->engine == "rtl";
+    if (rtl) vec::check_rectify_rtl_ppc(o->ppc);
+    const auto f = vec::rectify_preset(o->preset, o->data_dir, {o->roi[0], o->roi[1]});
+    const vec::RectifyRtl engine = rtl ? vec::RectifyRtl(run_rtl) : vec::RectifyRtl();
+    print(vec::write_rectify_set(f, o->preset, o->ppc, stalls, engine, o->out), o->out);
   });
 }
 

@@ -12,13 +12,25 @@
 #include "hls/labelling/labelling_params.hpp"
 #include "host/labelling/second_pass.hpp"
 #include "host/reference/labelling_ref.hpp"
+#include "host/vectors/labelling_maps.hpp"
 #include "sim/frame_beats.hpp"
 #include "sim/labelling_model.hpp"
 #include "sim/labelling_pack.hpp"
 #include "sim/stream_check.hpp"
-#include "tests/labelling/labelling_maps.hpp"
 
 namespace scw::test {
+
+// The maps are the golden vectors' fixtures too, so they live in host/vectors/.
+using fixtures::adversarial_maps;
+using fixtures::blank_map;
+using fixtures::comb_map;
+using fixtures::DispMap;
+using fixtures::dots_map;
+using fixtures::mesh_map;
+using fixtures::nested_u_map;
+using fixtures::random_map;
+using fixtures::spiral_map;
+using fixtures::staircase_map;
 
 using hls::labelling::FrameStatus;
 using hls::labelling::LabelPacket;

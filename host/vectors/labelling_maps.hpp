@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Disparity maps for the labelling tests: random fields of many densities and the shapes where
-// one-pass labelling goes wrong (spirals, combs, late-merging U shapes, objects across tiles).
+// Disparity maps for the labelling stage's tests and golden vectors (shared fixtures, so they live
+// in the product, not in tests/): random fields of many densities and the shapes where one-pass
+// labelling goes wrong (spirals, combs, late-merging U shapes, objects across tiles).
 #pragma once
 
 #include <cstdint>
@@ -8,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace scw::test {
+namespace scw::fixtures {
 
 /// A w x h map of Q11.4 disparities, row-major.
 struct DispMap {
@@ -20,6 +21,11 @@ struct DispMap {
 
 inline DispMap blank_map(const std::string& name, int w, int h) {
   return DispMap{name, w, h, std::vector<std::uint16_t>(static_cast<std::size_t>(w * h), 0)};
+}
+
+/// Sets (x, y) to `d` if it lies inside the map: shapes may run off the edges.
+inline void put(DispMap& m, int x, int y, int d) {
+  if (x >= 0 && x < m.w && y >= 0 && y < m.h) m.at(x, y) = static_cast<std::uint16_t>(d);
 }
 
 /// Each pixel valid with probability `density`, its disparity a smooth field (so neighbours
@@ -45,8 +51,10 @@ inline DispMap spiral_map(int w, int h, std::uint16_t d = 320) {
   while (x0 <= x1 && y0 <= y1) {
     for (int x = x0; x <= x1; ++x) m.at(x, y0) = d;
     for (int y = y0; y <= y1; ++y) m.at(x1, y) = d;
-    if (y1 > y0) for (int x = x0; x <= x1; ++x) m.at(x, y1) = d;
-    if (x0 + 2 <= x1) for (int y = y0 + 2; y <= y1; ++y) m.at(x0, y) = d;
+    if (y1 > y0)
+      for (int x = x0; x <= x1; ++x) m.at(x, y1) = d;
+    if (x0 + 2 <= x1)
+      for (int y = y0 + 2; y <= y1; ++y) m.at(x0, y) = d;
     x0 += 2, y0 += 2, x1 -= 2, y1 -= 2;
     if (x0 <= x1 && y0 <= y1) m.at(x0 - 1, y0) = d;  // the link into the next turn
   }
@@ -54,24 +62,28 @@ inline DispMap spiral_map(int w, int h, std::uint16_t d = 320) {
 }
 
 /// Teeth hanging from a bar at the bottom (every tooth a separate label until the last row
-/// joins them all) and teeth standing on a bar at the top, at alternating disparities.
-inline DispMap comb_map(int w, int h) {
+/// joins them all) and teeth standing on a bar at the top, at alternating disparities. `margin`
+/// empty rows above the upper teeth and on either side of the gap between the two combs.
+inline DispMap comb_map(int w, int h, int margin = 0) {
   DispMap m = blank_map("comb", w, h);
+  const int bar = h / 2 - 1 - margin;  // joins the upper teeth at their foot
   for (int x = 0; x < w; x += 2)
-    for (int y = 0; y < h / 2; ++y) m.at(x, y) = 400;
-  for (int x = 0; x < w; ++x) m.at(x, h / 2 - 1) = 400;  // joins the upper teeth at their foot
+    for (int y = margin; y <= bar; ++y) m.at(x, y) = 400;
+  for (int x = 0; x < w; ++x) m.at(x, bar) = 400;
   for (int x = 1; x < w; x += 2)
-    for (int y = h / 2; y < h; ++y) m.at(x, y) = static_cast<std::uint16_t>(200 + 4 * (x % 5));
+    for (int y = h / 2 + margin; y < h; ++y)
+      m.at(x, y) = static_cast<std::uint16_t>(200 + 4 * (x % 5));
   for (int x = 0; x < w; ++x) m.at(x, h - 1) = 202;
   return m;
 }
 
 /// Nested U shapes whose two arms meet only in their bottom rows, each inside the last, with
-/// disparities that join within a U and not between neighbouring Us.
-inline DispMap nested_u_map(int w, int h) {
+/// disparities that join within a U and not between neighbouring Us: as many as fit, or the
+/// first `count`; the k-th U's disparity is raised by k * `d_step`.
+inline DispMap nested_u_map(int w, int h, int count = 0, int d_step = 0) {
   DispMap m = blank_map("nested U", w, h);
-  for (int k = 0; 2 * k + 1 < w / 2 && 2 * k + 1 < h; ++k) {
-    const auto d = static_cast<std::uint16_t>(k % 2 ? 160 : 480);
+  for (int k = 0; 2 * k + 1 < w / 2 && 2 * k + 1 < h && (count == 0 || k < count); ++k) {
+    const auto d = static_cast<std::uint16_t>((k % 2 ? 160 : 480) + d_step * k);
     const int xl = 2 * k, xr = w - 1 - 2 * k, yb = h - 1 - 2 * k;
     for (int y = 0; y <= yb; ++y) m.at(xl, y) = m.at(xr, y) = d;
     for (int x = xl; x <= xr; ++x) m.at(x, yb) = d;
@@ -79,13 +91,14 @@ inline DispMap nested_u_map(int w, int h) {
   return m;
 }
 
-/// A staircase of 2 x 2 steps from corner to corner (4-connected through shared edges),
-/// crossing every tile border of any grid, plus a frame touching all four image borders.
-inline DispMap staircase_map(int w, int h) {
+/// A staircase of 2-wide, 3-tall steps from (x0, y0) towards the bottom right, each step sharing
+/// an edge with the next (4-connected, crossing every tile border of any grid), plus a frame on
+/// the image border at a disparity that does not join it.
+inline DispMap staircase_map(int w, int h, int x0 = 0, int y0 = 0) {
   DispMap m = blank_map("staircase", w, h);
-  for (int i = 0; 2 * i + 1 < w && 2 * i + 1 < h; ++i)
-    for (int dy = 0; dy < 3 && 2 * i + dy < h; ++dy)
-      for (int dx = 0; dx < 2; ++dx) m.at(2 * i + dx, 2 * i + dy) = 512;
+  for (int i = 0; x0 + 2 * i < w && y0 + 2 * i < h; ++i)
+    for (int dy = 0; dy < 3; ++dy)
+      for (int dx = 0; dx < 2; ++dx) put(m, x0 + 2 * i + dx, y0 + 2 * i + dy, 512);
   for (int x = 0; x < w; ++x) m.at(x, 0) = m.at(x, h - 1) = 96;
   for (int y = 0; y < h; ++y) m.at(0, y) = m.at(w - 1, y) = 96;
   return m;
@@ -114,8 +127,8 @@ inline DispMap dots_map(int w, int h) {
 
 /// Every shape above at one size.
 inline std::vector<DispMap> adversarial_maps(int w, int h) {
-  return {spiral_map(w, h), comb_map(w, h), nested_u_map(w, h), staircase_map(w, h),
+  return {spiral_map(w, h),  comb_map(w, h),    nested_u_map(w, h), staircase_map(w, h),
           mesh_map(w, h, 8), mesh_map(w, h, 5), dots_map(w, h)};
 }
 
-}  // namespace scw::test
+}  // namespace scw::fixtures
