@@ -173,12 +173,14 @@ struct ObjectEval {
   std::int32_t x_mm = 0, y_mm = 0, z_mm = 0;  // closest point, eq. 2.18
   std::int32_t x0_mm = 0, x1_mm = 0;          // left and right bounding-box edges at that depth
   std::int32_t y_top_mm = 0, y_bot_mm = 0;    // top and bottom edges
-  std::int32_t width_mm = 0, height_mm = 0;   // eq. 3.12; with road_height, the top's above
-                                              //   the road (the model's report, not the RTL's)
+  std::int32_t width_mm = 0, height_mm = 0;   // eq. 3.12
+  std::int32_t above_road_mm = 0;  // road_height: the top's height above the road where the
+                                   //   object stands (the model's report; the RTL compares only)
   std::int32_t distance_mm = 0;               // eq. 3.11 minus veh_z: from the bumper
   std::int32_t gap_mm = 0;                    // to the tunnel's cross-section, 0 = inside
   bool in_tunnel = false;
-  bool obstacle = false;                      // measurable and height >= min_height
+  bool obstacle = false;                      // measurable and height >= min_height (and, with
+                                              //   road_height, its top as high above the road)
   Severity severity = Severity::kNone;        // kNone unless an obstacle
 };
 
@@ -227,12 +229,13 @@ constexpr ObjectEval evaluate(const labelling::Object& o, const WarningConfig& c
   e.in_tunnel = e.gap_mm == 0;
   e.obstacle = e.height_mm >= c.min_height_mm;
   if (c.road_height) {
+    // Its top must also reach min_height above the road where it stands.
     const RoadHeight h = road_height(o, dq, road, c);
-    e.obstacle = h.lhs >= h.rhs;
+    e.obstacle = e.obstacle && h.lhs >= h.rhs;
     const std::int64_t per_mm = 32 * std::int64_t{road.a & kMaxSlopeCode} * dq;
     const std::int64_t mm = per_mm > 0 ? h.lhs / per_mm : (h.lhs >= 0 ? 0x7fffffff : -0x7fffffff);
-    e.height_mm = static_cast<std::int32_t>(mm > 0x7fffffff ? 0x7fffffff
-                                            : mm < -0x7fffffff ? -0x7fffffff : mm);
+    e.above_road_mm = static_cast<std::int32_t>(mm > 0x7fffffff ? 0x7fffffff
+                                                : mm < -0x7fffffff ? -0x7fffffff : mm);
   }
   if (!e.obstacle) return e;
   // Too close: closer than the search range can measure, so judged as if at the bumper.

@@ -73,15 +73,14 @@ RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s,
   r.gap_m = std::max(0.0, r.signed_gap_m);
   r.in_tunnel = r.gap_m == 0.0;
 
+  r.obstacle = r.height_m >= s.min_height_m;
   if (road != nullptr) {
     const double d_road = road->a * (o.y_min - 0.5) + road->b;
     // baseline (d - d_road) >= min_height a d, as the stage compares it (a = 0: a road at one
     // disparity puts every object nearer than it above it)
     const double rise = s.baseline_m * (d - d_road);
-    r.height_m = road->a > 0 ? rise / (road->a * d) : (rise >= 0 ? HUGE_VAL : -HUGE_VAL);
-    r.obstacle = rise >= s.min_height_m * road->a * d;
-  } else {
-    r.obstacle = r.height_m >= s.min_height_m;
+    r.above_road_m = road->a > 0 ? rise / (road->a * d) : (rise >= 0 ? HUGE_VAL : -HUGE_VAL);
+    r.obstacle = r.obstacle && rise >= s.min_height_m * road->a * d;
   }
   if (!r.obstacle) return r;
   r.severity = judge_severity(r.in_tunnel, r.gap_m, r.judged_distance_m(), s);

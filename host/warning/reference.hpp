@@ -24,7 +24,8 @@ struct RefEval {
   /// (x_min - 1/2, y_min - 1/2) and (x_max + 1/2, y_max + 1/2).
   Eigen::Vector3d top_left = Eigen::Vector3d::Zero();
   Eigen::Vector3d bottom_right = Eigen::Vector3d::Zero();
-  double width_m = 0.0, height_m = 0.0;  // eq. 3.12; with a road, the top's above it
+  double width_m = 0.0, height_m = 0.0;  // eq. 3.12
+  double above_road_m = 0.0;  // with a road: the top's height above it where the object stands
   double camera_distance_m = 0.0;        // |A|, eq. 3.11
   double distance_m = 0.0;               // |A| - vehicle_origin.z: from the bumper
   /// The box's separation from the tunnel's cross-section: the largest of the four amounts by
@@ -32,7 +33,7 @@ struct RefEval {
   double signed_gap_m = 0.0;
   double gap_m = 0.0;  // max(0, signed_gap_m)
   bool in_tunnel = false;
-  bool obstacle = false;  // measurable and height_m >= min_height_m
+  bool obstacle = false;  // measurable, height_m >= min_height_m (and above_road_m, with a road)
   hls::warning::Severity severity = hls::warning::Severity::kNone;
 
   /// The distance eq. 5.2 is applied to: 0 for a too-close object (judged as at the bumper).
@@ -62,10 +63,10 @@ double rule_disparity_px(const hls::labelling::Object& o, const WarningSetup& s)
 
 /// Evaluates one labelling object in double precision: no integer arithmetic, thresholds taken
 /// from `s` in metres as given (not rounded to the stage's millimetres). With `road` (the frame's
-/// road line, as the pipeline's warning stage has it) the height is the top's above the road
-/// where the object stands: the road's disparity at the box's top edge is d_road =
-/// a (y_min - 1/2) + b, the object stands where it is d, and a flat road seen from height
-/// H = baseline / a puts the top H (d - d_road) / d above it.
+/// road line, as the pipeline's warning stage has it) an obstacle's top must also lie
+/// min_height above the road where the object stands: the road's disparity at the box's top
+/// edge is d_road = a (y_min - 1/2) + b, the object stands where it is d, and a flat road seen
+/// from height H = baseline / a puts the top H (d - d_road) / d above it.
 RefEval evaluate_ref(const hls::labelling::Object& o, const WarningSetup& s,
                      const reference::RoadLinePx* road = nullptr);
 

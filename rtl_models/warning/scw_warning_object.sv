@@ -13,8 +13,8 @@
 //   6 .. 9    the seven coordinates (mm): rshift_round(S * offset, 24)
 //   10 .. 12  x^2, y^2, z^2; 10, 11: height, the box edges relative to the vehicle, then height
 //             >= min_height and the four tunnel margins; beside 1 .. 9, with
-//             cfg_road_height, the top's height above the road against min_height instead
-//             (scw_warning_height), which replaces the box's at stage 44
+//             cfg_road_height, the top's height above the road against min_height as well
+//             (scw_warning_height), which joins the box's at stage 44
 //   12, 13    the gaps across and up, then the gap to the tunnel
 //   13, 14    n = x^2 + y^2 + z^2; 14: in the tunnel, gap <= near
 //   15 .. 42  isqrt_round(n) (scw_warning_sqrt, one root bit per clock)
@@ -293,7 +293,7 @@ module scw_warning_object #(
   logic obst;
   logic [1:0] sev;
   always_comb begin
-    obst = meas44 && (road_q ? above44 : obst_h44);
+    obst = meas44 && obst_h44 && (!road_q || above44);
     if (!obst) sev = 2'd0;                                   // none
     else if (tun44) sev = le_high44 ? 2'd3 : lt_med44 ? 2'd2 : 2'd1;
     else sev = (near44 && lt_med44) ? 2'd2 : 2'd1;

@@ -1165,7 +1165,7 @@ TEST_CASE("scw_warning with a road line a frame equals the model, heights above 
       WarningConfig box = cfg;
       box.road_height = false;
       std::vector<FrameResult> expected;
-      int differ = 0, above = 0, below = 0;
+      int differ = 0, above = 0, below = 0, compared = 0;
       for (std::size_t f = 0; f < frames.size(); ++f) {
         expected.push_back(alone(frames[f], cfg, &roads[f]));
         if (expected.back() != alone(frames[f], box, nullptr)) ++differ;
@@ -1178,19 +1178,24 @@ TEST_CASE("scw_warning with a road line a frame equals the model, heights above 
           const scw::reference::RoadLinePx px = scw::reference::to_px(roads[f]);
           const auto ref = scw::host::warning::evaluate_ref(w.data.object, s, &px);
           // Compared where both place the object at one disparity (TableGen's sums are not
-          // always an object's) and the height is not at the threshold.
+          // always an object's) inside the stage's table, and no height is at the threshold.
           if (roads[f].a > 0 && std::abs(ref.disparity_px - e.d_q4 / 16.0) < 1.0 / 16 &&
-              std::abs(ref.height_m - s.min_height_m) > 0.05 * std::abs(ref.height_m) + 0.02) {
+              e.d_q4 < static_cast<std::uint32_t>(ParamsA::kTableSize) &&
+              std::abs(ref.above_road_m - s.min_height_m) >
+                  0.05 * std::abs(ref.above_road_m) + 0.02 &&
+              std::abs(ref.height_m - s.min_height_m) > 0.05 * ref.height_m + 0.02) {
             INFO("frame " << f << " road " << roads[f].a << " " << roads[f].b << " y_min "
                           << w.data.object.y_min << " d " << ref.disparity_px << " dq "
-                          << e.d_q4 << " height ref " << ref.height_m << " fixed "
-                          << e.height_mm);
+                          << e.d_q4 << " above the road: ref " << ref.above_road_m
+                          << " fixed " << e.above_road_mm);
             CHECK(ref.obstacle == e.obstacle);
+            ++compared;
           }
           (e.obstacle ? above : below)++;
         }
       }
       CHECK(differ > 0);  // the road changes some frames' results
+      CHECK(compared > 50);
       CHECK(above > 0);
       CHECK(below > 0);
       for (const auto& pattern : StallPattern::all(3)) {
