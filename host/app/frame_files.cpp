@@ -16,10 +16,11 @@ using host::io::write_image;
 
 void write_objects_csv(const fs::path& p, const FrameOutput& f) {
   std::ofstream csv(p);
-  // disparity: what placed the object (the distance rule's); d_max: its largest.
+  // disparity: what placed the object (the distance rule's); d_max: its largest; height_m: its
+  // box's at that depth; above_road_m: its top's above the road where it stands.
   csv << "label,area,u0,v0,u1,v1,closest_u,closest_v,disparity,d_max,x_m,y_m,z_m,width_m,height_m,"
          "distance_m,gap_m,in_tunnel,obstacle,too_close,severity,hu1,hu2,hu3,class,track,"
-         "deciding\n";
+         "deciding,above_road_m\n";
   for (const auto& r : f.objects) {
     const auto& o = r.object;
     const auto& e = r.eval;
@@ -30,7 +31,7 @@ void write_objects_csv(const fs::path& p, const FrameOutput& f) {
         << e.distance_mm / 1000.0 << ',' << e.gap_mm / 1000.0 << ',' << e.in_tunnel << ','
         << e.obstacle << ',' << e.too_close << ',' << severity_name(e.severity) << ','
         << r.hu[0] << ',' << r.hu[1] << ',' << r.hu[2] << ',' << r.cls << ',' << r.track << ','
-        << (r.label == f.deciding_label) << "\n";
+        << (r.label == f.deciding_label) << ',' << e.above_road_mm / 1000.0 << "\n";
   }
   if (!csv) throw std::runtime_error("cannot write '" + p.string() + "'");
 }
