@@ -4,4 +4,4 @@
 add_executable(test_classify app/test_classify.cpp ${PROJECT_SOURCE_DIR}/host/cli/cmd_train.cpp)
 target_link_libraries(test_classify PRIVATE scw_test_main scw::host CLI11::CLI11)
 scw_warnings(test_classify)
-catch_discover_tests(test_classify TEST_PREFIX "app:")
+scw_discover_tests(test_classify TEST_PREFIX "app:")

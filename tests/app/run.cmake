@@ -5,7 +5,7 @@
 add_executable(test_run app/test_run.cpp)
 target_link_libraries(test_run PRIVATE scw_test_main scw::host)
 scw_warnings(test_run)
-catch_discover_tests(test_run TEST_PREFIX "app:")
+scw_discover_tests(test_run TEST_PREFIX "app:")
 
 set(scw_tsu "${PROJECT_SOURCE_DIR}/data/tsukuba")
 # Tsukuba's camera is not published with the pair: f 615 px and b 0.1 m are assumed for the demo.

@@ -3,4 +3,4 @@
 add_executable(test_sta_path app/test_sta_path.cpp)
 target_link_libraries(test_sta_path PRIVATE scw_test_main scw::host)
 scw_warnings(test_sta_path)
-catch_discover_tests(test_sta_path TEST_PREFIX "app:")
+scw_discover_tests(test_sta_path TEST_PREFIX "app:")

@@ -89,8 +89,8 @@ TEST_CASE("run: the same box beside the tunnel is medium when near it, low when 
   CHECK(far_runner.process(l2, r2).result.severity == Severity::kLow);
 }
 
-TEST_CASE("run: a flat marking on the road is no obstacle; the default minimum height says so",
-          "[app]") {
+TEST_CASE("run: a flat marking on the road is no obstacle, the minimum height and the road stage "
+          "say so", "[app]") {
   auto o = options();
   scw::app::Runner runner(o, std::nullopt);
   const auto [l, r] = render(40.0, -0.3, 6.0, 1.5, 0.2);  // 20 cm high: a painted sign, seen flat
@@ -98,9 +98,14 @@ TEST_CASE("run: a flat marking on the road is no obstacle; the default minimum h
   // Only the far wall is an obstacle: low, decided at the wall's disparity (3.75 px).
   CHECK(out.result.severity == Severity::kLow);
   CHECK(std::abs(out.result.d_max / 16.0 - 3.75) <= 1.0);
+  // Without the minimum height the road stage still removes it (it lies within its band)...
   o.warning.min_height_m = 0.0;
   scw::app::Runner no_limit(o, std::nullopt);
-  CHECK(no_limit.process(l, r).result.severity == Severity::kHigh);
+  CHECK(no_limit.process(l, r).result.severity == Severity::kLow);
+  // ...and without either it is the nearest obstacle, in the tunnel: high.
+  o.road = false;
+  scw::app::Runner neither(o, std::nullopt);
+  CHECK(neither.process(l, r).result.severity == Severity::kHigh);
 }
 
 TEST_CASE("run: errors name what is wrong", "[app]") {

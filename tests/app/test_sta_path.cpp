@@ -62,7 +62,7 @@ TEST_CASE("a register-to-register path: launch after the clock buffer, end at th
   CHECK(p.back().ps == 5196);
 }
 
-TEST_CASE("a path from an input port starts at the port; an unread carry output is its end",
+TEST_CASE("a path from an input port starts at the port, an unread carry output is its end",
           "[app]") {
   const auto p = parse_sta_path(kFromResetToCarry);
   REQUIRE(p.size() == 6);

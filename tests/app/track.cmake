@@ -3,4 +3,4 @@
 add_executable(test_track app/test_track.cpp)
 target_link_libraries(test_track PRIVATE scw_test_main scw::host)
 scw_warnings(test_track)
-catch_discover_tests(test_track TEST_PREFIX "app:")
+scw_discover_tests(test_track TEST_PREFIX "app:")

@@ -10,4 +10,4 @@ add_executable(test_disparity_decide_rtl disparity/test_disparity_decide_rtl.cpp
 target_link_libraries(test_disparity_decide_rtl
                       PRIVATE scw_test_main scw::sim scw::host scw_test_rtl_decide)
 scw_warnings(test_disparity_decide_rtl)
-catch_discover_tests(test_disparity_decide_rtl TEST_PREFIX "disparity:")
+scw_discover_tests(test_disparity_decide_rtl TEST_PREFIX "disparity:")

@@ -11,4 +11,4 @@ add_executable(test_disparity_prefilter_rtl disparity/test_disparity_prefilter_r
 target_link_libraries(test_disparity_prefilter_rtl
                       PRIVATE scw_test_main scw::sim scw::host scw_test_rtl_prefilter)
 scw_warnings(test_disparity_prefilter_rtl)
-catch_discover_tests(test_disparity_prefilter_rtl TEST_PREFIX "disparity:")
+scw_discover_tests(test_disparity_prefilter_rtl TEST_PREFIX "disparity:")

@@ -3,4 +3,4 @@
 add_executable(test_eval ${CMAKE_CURRENT_LIST_DIR}/test_eval.cpp)
 target_link_libraries(test_eval PRIVATE scw_test_main scw::host)
 scw_warnings(test_eval)
-catch_discover_tests(test_eval TEST_PREFIX "eval:")
+scw_discover_tests(test_eval TEST_PREFIX "eval:")

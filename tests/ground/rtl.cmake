@@ -15,7 +15,7 @@ add_executable(test_ground_rtl ground/test_ground_rtl.cpp)
 target_link_libraries(test_ground_rtl PRIVATE scw_test_main scw::sim scw::host scw_test_rtl_ground)
 target_compile_definitions(test_ground_rtl PRIVATE SCW_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
 scw_warnings(test_ground_rtl)
-catch_discover_tests(test_ground_rtl TEST_PREFIX "ground:")
+scw_discover_tests(test_ground_rtl TEST_PREFIX "ground:")
 
 # 10 rows x 1280 columns x 16 bits (204,800 bits) must be block RAM, not flip-flops or LUT RAM.
 # The limit leaves room for the line buffer's window, RAM output, forwarding and output

@@ -3,7 +3,7 @@
 add_executable(test_labelling_post ${CMAKE_CURRENT_SOURCE_DIR}/labelling/test_labelling_post.cpp)
 target_link_libraries(test_labelling_post PRIVATE scw_test_main scw::host)
 scw_warnings(test_labelling_post)
-catch_discover_tests(test_labelling_post TEST_PREFIX "labelling:")
+scw_discover_tests(test_labelling_post TEST_PREFIX "labelling:")
 
 # `scw segment` on Tsukuba's ground truth (8-bit, disparity x 16): the three files, checked by the
 # hidden "[.segment-output]" case of test_labelling_post (labels.png 16-bit, its largest label =

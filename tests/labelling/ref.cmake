@@ -5,4 +5,4 @@ add_executable(test_labelling_ref ${CMAKE_CURRENT_SOURCE_DIR}/labelling/test_lab
 target_link_libraries(test_labelling_ref PRIVATE scw_test_main scw::host)
 target_compile_definitions(test_labelling_ref PRIVATE SCW_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
 scw_warnings(test_labelling_ref)
-catch_discover_tests(test_labelling_ref TEST_PREFIX "labelling:")
+scw_discover_tests(test_labelling_ref TEST_PREFIX "labelling:")

@@ -26,4 +26,4 @@ add_executable(test_labelling_rtl labelling/test_labelling_rtl.cpp)
 target_link_libraries(test_labelling_rtl
                       PRIVATE scw_test_main scw::sim scw::host scw_test_rtl_labelling)
 scw_warnings(test_labelling_rtl)
-catch_discover_tests(test_labelling_rtl TEST_PREFIX "labelling:")
+scw_discover_tests(test_labelling_rtl TEST_PREFIX "labelling:")

@@ -6,14 +6,14 @@ target_link_libraries(test_pipeline_chain PRIVATE scw_test_main scw::sim scw::ho
                                                   scw_rtl_pipeline_small)
 target_compile_definitions(test_pipeline_chain PRIVATE SCW_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
 scw_warnings(test_pipeline_chain)
-catch_discover_tests(test_pipeline_chain TEST_PREFIX "pipeline:")
+scw_discover_tests(test_pipeline_chain TEST_PREFIX "pipeline:")
 
 # `scw run --engine rtl`'s engine against the C++ models through the application chain.
 add_executable(test_pipeline_run pipeline/test_pipeline_run.cpp)
 target_link_libraries(test_pipeline_run PRIVATE scw_test_main scw::host scw_rtl_engine)
 target_compile_definitions(test_pipeline_run PRIVATE SCW_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
 scw_warnings(test_pipeline_run)
-catch_discover_tests(test_pipeline_run TEST_PREFIX "pipeline:")
+scw_discover_tests(test_pipeline_run TEST_PREFIX "pipeline:")
 
 # `scw sim` end to end: the small build all RTL under random stalls, the floating-point chain
 # beside it, the JSON report; and a bad option named.

@@ -10,4 +10,4 @@ add_executable(test_pipeline_frame_check pipeline/test_frame_check_rtl.cpp)
 target_link_libraries(test_pipeline_frame_check PRIVATE scw_test_main scw::sim
                       scw_test_rtl_frame_check)
 scw_warnings(test_pipeline_frame_check)
-catch_discover_tests(test_pipeline_frame_check TEST_PREFIX "pipeline:")
+scw_discover_tests(test_pipeline_frame_check TEST_PREFIX "pipeline:")

@@ -271,7 +271,7 @@ TEST_CASE("20 frames under random input gaps and output backpressure: same resul
   SECTION("P = 2: the labelling stage's two lanes") { check_stalls<2>(); }
 }
 
-TEST_CASE("broken input frames are flagged in their result; the next frame is right",
+TEST_CASE("broken input frames are flagged in their result, the next frame is right",
           "[pipeline][rtl]") {
   constexpr int P = 1;
   using B = scw::hls::Beat<std::uint8_t, P>;

@@ -4,4 +4,4 @@
 add_executable(test_road_hls road/test_road_hls.cpp)
 target_link_libraries(test_road_hls PRIVATE scw_test_main scw::sim scw::host)
 scw_warnings(test_road_hls)
-catch_discover_tests(test_road_hls TEST_PREFIX "road:")
+scw_discover_tests(test_road_hls TEST_PREFIX "road:")

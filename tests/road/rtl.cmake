@@ -14,7 +14,7 @@ scw_verilate(scw_test_rtl_road TOP scw_road_fit PREFIX Vroad_fit STAGE road
 add_executable(test_road_rtl road/test_road_rtl.cpp)
 target_link_libraries(test_road_rtl PRIVATE scw_test_main scw::sim scw::host scw_test_rtl_road)
 scw_warnings(test_road_rtl)
-catch_discover_tests(test_road_rtl TEST_PREFIX "road:")
+scw_discover_tests(test_road_rtl TEST_PREFIX "road:")
 
 # The thesis-size stage closes the timing rule of docs/timing.md (every register-to-register path
 # at most 3,500 ps in Yosys sta) at 1 and 4 disparities a beat. Without Yosys the tests fail

@@ -143,7 +143,7 @@ TEST_CASE("road: the fit's integer arithmetic against doubles", "[hls][road]") {
   }
 }
 
-TEST_CASE("road: the cycle model equals the frame function under stalls; the fit holds sof",
+TEST_CASE("road: the cycle model equals the frame function under stalls, the fit holds sof",
           "[hls][road]") {
   using Params = scw::hls::road::RoadParams<2, 64, 32>;
   using Beat = Params::in_beat;

@@ -4,4 +4,4 @@
 add_executable(test_scene scene/test_scene.cpp)
 target_link_libraries(test_scene PRIVATE scw_test_main scw::host)
 scw_warnings(test_scene)
-catch_discover_tests(test_scene TEST_PREFIX "scene:")
+scw_discover_tests(test_scene TEST_PREFIX "scene:")

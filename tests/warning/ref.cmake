@@ -6,4 +6,4 @@ add_executable(test_warning_ref ${CMAKE_CURRENT_SOURCE_DIR}/warning/test_warning
                                 ${CMAKE_CURRENT_SOURCE_DIR}/warning/test_warning_overlay.cpp)
 target_link_libraries(test_warning_ref PRIVATE scw_test_main scw::host)
 scw_warnings(test_warning_ref)
-catch_discover_tests(test_warning_ref TEST_PREFIX "warning:")
+scw_discover_tests(test_warning_ref TEST_PREFIX "warning:")

@@ -17,4 +17,4 @@ add_executable(test_warning_rtl warning/test_warning_rtl.cpp)
 target_link_libraries(test_warning_rtl
                       PRIVATE scw_test_main scw::sim scw::host scw_test_rtl_warning)
 scw_warnings(test_warning_rtl)
-catch_discover_tests(test_warning_rtl TEST_PREFIX "warning:")
+scw_discover_tests(test_warning_rtl TEST_PREFIX "warning:")
