@@ -14,6 +14,7 @@
 #include "hls/labelling/labelling.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/labelling/second_pass.hpp"
+#include "host/labelling/segment_files.hpp"
 #include "host/reference/labelling_ref.hpp"
 #include "host/vectors/labelling_maps.hpp"
 #include "host/vectors/vector_set.hpp"
@@ -247,10 +248,7 @@ std::vector<FrameOut> run_model(const Preset& p, const std::vector<InBeat>& beat
 }
 
 std::string status_text(const FrameStatus& s) {
-  std::ostringstream t;
-  t << s.objects << " objects, tile_overflow " << s.tile_overflow << ", object_overflow "
-    << s.object_overflow << ", stream_error " << s.stream_error;
-  return t.str();
+  return std::to_string(s.objects) + " objects, " + labelling::status_flags(s);
 }
 
 /// Throws unless the model's frame is what the reference says it must be.
