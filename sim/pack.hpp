@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <type_traits>
+#include <vector>
 
 #include "hls/common/beat.hpp"
 #include "hls/common/line_buffer.hpp"
@@ -123,6 +124,15 @@ Bits pack(const B& b) {
     w.set(L::kPayloadBits + 1, 1, L::eol(b));
   }
   return w;
+}
+
+/// Every beat of a stream packed (a vector set's hex lines).
+template <typename B>
+std::vector<Bits> pack_all(const std::vector<B>& beats) {
+  std::vector<Bits> v;
+  v.reserve(beats.size());
+  for (const auto& b : beats) v.push_back(pack(b));
+  return v;
 }
 
 template <typename B>

@@ -157,9 +157,8 @@ void run(const Options& o, const cv::Mat& grey) {
                             {"height", h},
                             {"latency", Params::kLatency}},
                            "scw_line_buffer: each beat with the same columns of the 2 rows above");
-  std::vector<sim::Bits> hex_in, hex_out;
-  for (const auto& b : frame) hex_in.push_back(sim::pack(b));
-  for (const auto& b : expect) hex_out.push_back(sim::pack(b));
+  const auto hex_in = sim::pack_all(frame);
+  const auto hex_out = sim::pack_all(expect);
   vw.add_image("input.png", "input", grey);
   vw.add_hex("input.hex", "input", hex_in, vectors::pixel_beat_layout(P, 8));
   vw.add_hex("expected.hex", "expected", hex_out, vectors::pixel_beat_layout(P * kRows, 8));

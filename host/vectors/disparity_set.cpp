@@ -89,14 +89,6 @@ Frame tsukuba(const std::filesystem::path& dir) {
   return f;
 }
 
-template <typename Beat>
-std::vector<sim::Bits> packed(const std::vector<Beat>& beats) {
-  std::vector<sim::Bits> v;
-  v.reserve(beats.size());
-  for (const auto& b : beats) v.push_back(sim::pack(b));
-  return v;
-}
-
 /// How many of the computed pixels find the frame's true disparity.
 void count_known_shifts(const Frame& f, const std::vector<std::uint16_t>& ref,
                         std::uint16_t invalid, DisparitySetSummary& sum) {
@@ -140,9 +132,9 @@ void write_files(const std::filesystem::path& dir, const Frame& f, const nlohman
   VectorWriter vw(dir, "disparity", config, f.description);
   vw.add_image("left.png", "input", f.left);
   vw.add_image("right.png", "input", f.right);
-  vw.add_hex("left.hex", "input", packed(l), pixel_beat_layout(kPpc, 8));
-  vw.add_hex("right.hex", "input", packed(r), pixel_beat_layout(kPpc, 8));
-  vw.add_hex("expected.hex", "expected", packed(expect), disp_layout);
+  vw.add_hex("left.hex", "input", sim::pack_all(l), pixel_beat_layout(kPpc, 8));
+  vw.add_hex("right.hex", "input", sim::pack_all(r), pixel_beat_layout(kPpc, 8));
+  vw.add_hex("expected.hex", "expected", sim::pack_all(expect), disp_layout);
   cv::Mat out_img(f.left.rows, f.left.cols, CV_16UC1);
   std::memcpy(out_img.data, ref.data(), ref.size() * sizeof(std::uint16_t));
   vw.add_image("expected.png", "expected", out_img);

@@ -394,9 +394,8 @@ void write_files(const std::filesystem::path& dir, const Preset& p, const nlohma
                  const std::vector<InBeat>& beats, const std::vector<LabelPacket>& words,
                  const std::vector<cv::Mat>& images, const std::vector<cv::Mat>& label_images,
                  const Rows& obj_rows, const Rows& status_rows) {
-  std::vector<sim::Bits> in_words, out_words;
-  for (const auto& b : beats) in_words.push_back(sim::pack(b));
-  for (const auto& w : words) out_words.push_back(sim::pack(w));
+  const auto in_words = sim::pack_all(beats);
+  const auto out_words = sim::pack_all(words);
   VectorWriter vw(dir, "labelling", config, p.description);
   vw.add_hex("in.hex", "input", in_words, pixel_beat_layout(1, 16));
   vw.add_image("in.png", "input", stacked(images));

@@ -216,14 +216,6 @@ nlohmann::json map_beat_layout(int p, int coord_bits) {
           {"fields", fields}};
 }
 
-template <typename Beat>
-std::vector<sim::Bits> packed(const std::vector<Beat>& beats) {
-  std::vector<sim::Bits> v;
-  v.reserve(beats.size());
-  for (const auto& b : beats) v.push_back(sim::pack(b));
-  return v;
-}
-
 /// Checks one engine's run: handshake rules kept, no time-out, no error bits, and every beat
 /// equal to the reference; throws naming the engine and the first wrong beat otherwise.
 template <typename Out>
@@ -280,9 +272,10 @@ void write_files(const std::filesystem::path& dir, const Frame& f, int lead_rows
                            {"max_height", Params::kMaxHeight}};
   VectorWriter vw(dir, "rectify", config, f.description);
   vw.add_image("input.png", "input", f.raw);
-  vw.add_hex("input.hex", "input", packed(raw_beats), pixel_beat_layout(P, 8));
-  vw.add_hex("map.hex", "input", packed(map_beats), map_beat_layout(P, Params::kCoordBits));
-  vw.add_hex("expected.hex", "expected", packed(expect), pixel_beat_layout(P, 8));
+  vw.add_hex("input.hex", "input", sim::pack_all(raw_beats), pixel_beat_layout(P, 8));
+  vw.add_hex("map.hex", "input", sim::pack_all(map_beats),
+             map_beat_layout(P, Params::kCoordBits));
+  vw.add_hex("expected.hex", "expected", sim::pack_all(expect), pixel_beat_layout(P, 8));
   cv::Mat out_img(h, w, CV_8UC1);
   std::copy(ref.begin(), ref.end(), out_img.data);
   vw.add_image("expected.png", "expected", out_img);

@@ -416,9 +416,8 @@ RoadSetSummary write_road_set(const RoadSequence& seq, const std::filesystem::pa
       {"beats", in.size()},
       {"fits", sum.fits}};
 
-  std::vector<sim::Bits> in_words, out_words;
-  for (const auto& b : in) in_words.push_back(sim::pack(b));
-  for (const auto& b : want) out_words.push_back(sim::pack(b));
+  const auto in_words = sim::pack_all(in);
+  const auto out_words = sim::pack_all(want);
   std::vector<std::vector<std::string>> rows;
   for (int f = 0; f < frames; ++f) {
     const FrameRun& r = runs[static_cast<std::size_t>(f)];

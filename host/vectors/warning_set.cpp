@@ -490,9 +490,8 @@ std::vector<std::string> result_row(std::size_t frame, std::size_t closing, cons
 void write_files(const std::filesystem::path& dir, const Preset& p, const nlohmann::json& config,
                  const std::vector<LabelPacket>& in, const std::vector<ResultPacket>& out,
                  const Rows& word_rows, const Rows& eval_rows, const Rows& result_rows) {
-  std::vector<sim::Bits> in_bits, out_bits;
-  for (const auto& w : in) in_bits.push_back(sim::pack(w));
-  for (const auto& r : out) out_bits.push_back(sim::pack(r));
+  const auto in_bits = sim::pack_all(in);
+  const auto out_bits = sim::pack_all(out);
   VectorWriter vw(dir, "warning", config, p.description);
   vw.add_hex("in.hex", "input", in_bits, labelling_word_layout());
   vw.add_csv("in_words.csv", "input",
