@@ -15,15 +15,23 @@ namespace {
 /// 20 px at 8 m, so a sliver the pair both see is not stepped over.
 constexpr int kSteps = 16;
 
-/// Whether a point of the left camera's frame, in front of `cam`'s centre, projects (with
-/// distortion) into its image.
-bool in_image(const cv::Vec3d& p_cam, const CameraModel& cam, const cv::Size& size) {
-  if (p_cam[2] <= 0.0) return false;
+/// Whether each point of the left camera's frame lies in front of the camera whose frame is
+/// `r` p + `t` and projects (with distortion) into its image: one projectPoints call for all.
+std::vector<bool> in_image(const std::vector<cv::Point3d>& left_pts, const cv::Matx33d& r,
+                           const cv::Vec3d& t, const CameraModel& cam, const cv::Size& size) {
+  std::vector<cv::Point3d> pts;
+  pts.reserve(left_pts.size());
+  for (const auto& p : left_pts) {
+    const cv::Vec3d q = r * cv::Vec3d(p.x, p.y, p.z) + t;
+    pts.emplace_back(q[0], q[1], q[2]);
+  }
   std::vector<cv::Point2d> uv;
-  cv::projectPoints(std::vector<cv::Point3d>{{p_cam[0], p_cam[1], p_cam[2]}}, cv::Vec3d(0, 0, 0),
-                    cv::Vec3d(0, 0, 0), cam.matrix(), cam.dist, uv);
-  return uv[0].x >= -0.5 && uv[0].x <= size.width - 0.5 && uv[0].y >= -0.5 &&
-         uv[0].y <= size.height - 0.5;
+  cv::projectPoints(pts, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), cam.matrix(), cam.dist, uv);
+  std::vector<bool> in(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    in[i] = pts[i].z > 0.0 && uv[i].x >= -0.5 && uv[i].x <= size.width - 0.5 &&
+            uv[i].y >= -0.5 && uv[i].y <= size.height - 0.5;
+  return in;
 }
 
 }  // namespace
@@ -38,18 +46,20 @@ bool in_view(const SceneObject& o, const StereoRig& rig) {
   if (ahead == 0) return false;
   if (ahead < 8) return true;  // across the camera's plane: beside the car
   // Stereo measures only what both cameras see: some point of the box in both images.
-  const cv::Matx33d r = rig.rotation();
+  std::vector<cv::Point3d> grid;
   for (int i = 0; i <= kSteps; ++i)
     for (int j = 0; j <= kSteps; ++j)
       for (int k = 0; k <= kSteps; ++k) {
         const cv::Vec3d t(double(i) / kSteps, double(j) / kSteps, double(k) / kSteps);
         cv::Vec3d v;
         for (int a = 0; a < 3; ++a) v[a] = o.box_min[a] + t[a] * (o.box_max[a] - o.box_min[a]);
-        const cv::Vec3d pl = rig.vehicle_to_left(v);
-        if (in_image(pl, rig.left, rig.image_size) &&
-            in_image(r * pl + rig.translation_m, rig.right, rig.image_size))
-          return true;
+        const cv::Vec3d p = rig.vehicle_to_left(v);
+        grid.emplace_back(p[0], p[1], p[2]);
       }
+  const auto left = in_image(grid, cv::Matx33d::eye(), {0, 0, 0}, rig.left, rig.image_size);
+  const auto right = in_image(grid, rig.rotation(), rig.translation_m, rig.right, rig.image_size);
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (left[i] && right[i]) return true;
   return false;
 }
 
