@@ -12,7 +12,7 @@ install(TARGETS scw_hls scw_sim scw_host EXPORT scwTargets
 install(TARGETS scw RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 foreach(dir hls sim host)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/scw
-          FILES_MATCHING PATTERN "*.hpp")
+          FILES_MATCHING PATTERN "*.hpp" PATTERN "*.def")
 endforeach()
 install(EXPORT scwTargets NAMESPACE scw:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/scw)
 

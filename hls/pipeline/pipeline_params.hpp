@@ -46,20 +46,12 @@ struct PipelineParams {
   using ground = ::scw::hls::ground::GroundParams<MaxWidthPx>;
 };
 
-/// The thesis configuration (architecture section 2): 1280 x 480, window 21, 45 candidates
-/// (20 .. 64), 64 raw rows in each rectifier, knots every 16 px, 8 x 4 labelling tiles of 32
-/// labels, 256 objects, a reciprocal table up to 128 px.
-template <int P>
-using ThesisPipeline = PipelineParams<P, 1280, 480, 64, 4, 21, 45, 8, 4, 32, 256, 128>;
-
-/// A small build for tests and CI (RTL compiles and runs in seconds): up to 128 x 96 (a crop
-/// of the Tsukuba pair fits, disparities 0 .. 15), window 9, 16 candidates, 16 raw rows, knots
-/// every 8 px, up to 4 x 2 tiles of 256 labels (4 tile columns for 4 lanes), 64 objects, codes
-/// below 32 px.
-template <int P>
-using SmallPipeline = PipelineParams<P, 128, 96, 16, 3, 9, 16, 4, 2, 256, 64, 32>;
-
-/// Tsukuba-sized (384 x 288), window 9, 16 candidates (0 .. 15): the bundled real pair.
-using TsukubaPipeline = PipelineParams<1, 384, 288, 16, 4, 9, 16, 4, 4, 256, 64, 32>;
+/// The builds: `ThesisPipeline<P>`, `SmallPipeline<P>`, `TsukubaPipeline<P>`, one for each row of
+/// pipeline_configs.def (what each is for is written there), the file CMake Verilates them from.
+#define SCW_PIPELINE_CONFIG(Name, ...) \
+  template <int P>                      \
+  using Name##Pipeline = PipelineParams<P, __VA_ARGS__>;
+#include "hls/pipeline/pipeline_configs.def"
+#undef SCW_PIPELINE_CONFIG
 
 }  // namespace scw::hls::pipeline

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # `scw sim`: the whole pipeline clocked (the small build's Verilated blocks always; the thesis
-# size's with -DSCW_THESIS_RTL=ON, sim/builds/pipeline_thesis.cmake).
+# size's with -DSCW_THESIS_RTL=ON, scw_pipeline_build in sim/CMakeLists.txt).
 target_sources(scw PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/cmd_sim.cpp)
 target_link_libraries(scw PRIVATE scw_rtl_engine)
 if(SCW_THESIS_RTL)

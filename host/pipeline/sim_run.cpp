@@ -172,28 +172,30 @@ SimRun run_small(const SimOptions& o, std::ostream& log) {
       log << "small build, P = 2: Verilated labelling, warning and merge; the other blocks run "
              "as C++ (docs/pipeline.md)\n";
     return run<Build, typename sim::small_build::Rtl<P>::type>(
-        o, log, Build::kMaxWidthPx, Build::kMaxHeight, 0, 16, sim::small_build::rtl_engines<P>());
+        o, log, Build::kMaxWidthPx, Build::kMaxHeight, 0, Build::kNumDisp, sim::small_build::rtl_engines<P>());
   } else {
-    return run<Build, sim::NoRtl>(o, log, Build::kMaxWidthPx, Build::kMaxHeight, 0, 16);
+    return run<Build, sim::NoRtl>(o, log, Build::kMaxWidthPx, Build::kMaxHeight, 0, Build::kNumDisp);
   }
 }
 
 template <int P>
 SimRun run_thesis(const SimOptions& o, std::ostream& log) {
   using Build = hls::pipeline::ThesisPipeline<P>;
+  constexpr int w = Build::kMaxWidthPx, h = Build::kMaxHeight;
+  constexpr int kMinDisp = 20;  // the thesis's range: 45 candidates from 20 px
 #if SCW_THESIS_RTL
   if constexpr (P == 1)
-    return run<Build, sim::thesis_build::Rtl<1>::type>(o, log, 1280, 480, 20, 45);
+    return run<Build, sim::thesis_build::Rtl<1>::type>(o, log, w, h, kMinDisp, Build::kNumDisp);
 #if SCW_THESIS_RTL_P2
   if constexpr (P == 2)
-    return run<Build, sim::thesis_build::Rtl<2>::type>(o, log, 1280, 480, 20, 45);
+    return run<Build, sim::thesis_build::Rtl<2>::type>(o, log, w, h, kMinDisp, Build::kNumDisp);
 #endif
 #if SCW_THESIS_RTL_P4
   if constexpr (P == 4)
-    return run<Build, sim::thesis_build::Rtl<4>::type>(o, log, 1280, 480, 20, 45);
+    return run<Build, sim::thesis_build::Rtl<4>::type>(o, log, w, h, kMinDisp, Build::kNumDisp);
 #endif
 #endif
-  return run<Build, sim::NoRtl>(o, log, 1280, 480, 20, 45);
+  return run<Build, sim::NoRtl>(o, log, w, h, kMinDisp, Build::kNumDisp);
 }
 
 }  // namespace

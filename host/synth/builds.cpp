@@ -153,7 +153,7 @@ const std::vector<Config>& configs() {
                 : p == 2 ? modules_of<pl::SmallPipeline<2>>()
                          : modules_of<pl::SmallPipeline<4>>();
        }},
-      {"tsukuba", {1}, "minutes", [](int) { return modules_of<pl::TsukubaPipeline>(); }},
+      {"tsukuba", {1}, "minutes", [](int) { return modules_of<pl::TsukubaPipeline<1>>(); }},
   };
   return kConfigs;
 }

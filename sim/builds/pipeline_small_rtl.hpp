@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The small build's Verilated blocks (sim/builds/pipeline_small.cmake), each checked against
-// hls::pipeline::SmallPipeline<P>, bundled for PipelineChain and PipelineTop.
+// The small build's Verilated blocks (scw_pipeline_build in sim/CMakeLists.txt), each checked
+// against hls::pipeline::SmallPipeline<P>, bundled for PipelineChain and PipelineTop.
 #pragma once
 
 #include "Vpipe_ground.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The thesis-size build's Verilated blocks (sim/builds/pipeline_thesis.cmake), each checked
+// The thesis-size build's Verilated blocks (scw_pipeline_build in sim/CMakeLists.txt), each checked
 // against hls::pipeline::ThesisPipeline<P>, bundled for PipelineChain. P = 1 always; P = 2 and 4
 // when SCW_THESIS_RTL_PPC has them.
 #pragma once

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-# [pipeline] The whole pipeline at the small build (sim/builds/pipeline_small.cmake): the C++
+# [pipeline] The whole pipeline at the small build (scw_pipeline_build in sim/CMakeLists.txt): the C++
 # chain, the chain of Verilated blocks and the Verilated scw_pipeline top, clock for clock.
 add_executable(test_pipeline_chain pipeline/test_pipeline_chain.cpp)
 target_link_libraries(test_pipeline_chain PRIVATE scw_test_main scw::sim scw::host
