@@ -151,6 +151,10 @@ void pipeline_frame(PipelineStages<Build>& s, RawIn& left, RawIn& right, ResultO
 #pragma HLS STREAM variable=road depth=4
 #pragma HLS STREAM variable=objects depth=2
 #pragma HLS STREAM variable=words depth=2
+#pragma HLS STREAM variable=flag_l depth=4
+#pragma HLS STREAM variable=flag_r depth=4
+#pragma HLS STREAM variable=lines depth=4
+#pragma HLS STREAM variable=frame_result depth=2
   // clang-format on
   const int n = s.beats;
   frame_check_frame(s.check_left, left, checked_l, flag_l, n);
