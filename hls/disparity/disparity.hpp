@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/stream.hpp"
 #include "hls/disparity/decide_latency.hpp"
 #include "hls/disparity/disparity_params.hpp"
 #include "hls/disparity/prefilter.hpp"
@@ -321,27 +322,48 @@ class Disparity {
 /// Whole frames of beat pairs through the stage with no output stalls: `n` beats from `l` and `r`
 /// (frames of the configured size, back to back), `n` disparity beats to `out`; returns how many
 /// were written (n, unless the input breaks the frame geometry and `max_clocks` runs out first).
-/// The loop is one clock of the stage an iteration: it takes the next pair when the stage is
-/// ready (always, for well-formed frames with the output never stalled) and writes a beat when
-/// one leaves. What an HLS tool synthesises as the stage's top.
-template <typename Params>
-int disparity_frame(Disparity<Params>& d, const typename Params::pixel_beat* l,
-                    const typename Params::pixel_beat* r, typename Params::disp_beat* out, int n,
-                    long max_clocks) {
-  int taken = 0, written = 0;
+/// The loop is one clock of the stage an iteration: it takes the next pair when both have one and
+/// the stage is ready (always, for well-formed frames with the output never stalled) and writes a
+/// beat when one leaves. What an HLS tool synthesises as the stage's top: the ports are
+/// hls::stream (or ArrayIn / ArrayOut).
+template <typename Params, typename In, typename Out, if_port<Out> = 0>
+int disparity_frame(Disparity<Params>& d, In& l, In& r, Out& out, int n, long max_clocks) {
+  // clang-format off
+#pragma HLS INTERFACE axis port=l
+#pragma HLS INTERFACE axis port=r
+#pragma HLS INTERFACE axis port=out
+#pragma HLS INTERFACE s_axilite port=n
+#pragma HLS INTERFACE s_axilite port=max_clocks
+#pragma HLS INTERFACE s_axilite port=return
+  // clang-format on
+  using beat = typename Params::pixel_beat;
+  int written = 0;
 loop_clock:
   for (long c = 0; c < max_clocks && written < n; ++c) {
     // clang-format off
 #pragma HLS PIPELINE II=1
     // clang-format on
-    const bool take = taken < n && d.in_ready(true, true);
-    const auto e = d.clock(take, take ? l[taken] : typename Params::pixel_beat{},
-                           take ? r[taken] : typename Params::pixel_beat{}, true);
-    if (take) ++taken;
-    if (e.valid) out[written++] = e.beat;
+    const bool take = !l.empty() && !r.empty() && d.in_ready(true, true);
+    const beat lb = take ? l.read() : beat{};
+    const beat rb = take ? r.read() : beat{};
+    const auto e = d.clock(take, lb, rb, true);
+    if (e.valid) {
+      out.write(e.beat);
+      ++written;
+    }
   }
   return written;
 }
 #pragma GCC diagnostic pop
+
+/// The frame function over arrays of `n` beats each (tests).
+template <typename Params>
+int disparity_frame(Disparity<Params>& d, const typename Params::pixel_beat* l,
+                    const typename Params::pixel_beat* r, typename Params::disp_beat* out, int n,
+                    long max_clocks) {
+  ArrayIn<typename Params::pixel_beat> lv(l, n), rv(r, n);
+  ArrayOut<typename Params::disp_beat> o(out);
+  return disparity_frame(d, lv, rv, o, n, max_clocks);
+}
 
 }  // namespace scw::hls::disparity

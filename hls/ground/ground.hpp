@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "hls/common/line_buffer.hpp"
+#include "hls/common/stream.hpp"
 #include "hls/ground/ground_params.hpp"
 
 namespace scw::hls::ground {
@@ -93,18 +94,33 @@ class Ground {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-label"
 /// A frame (or several) of beats through the stage with no stalls: one output beat per input
-/// beat, in order. What an HLS tool synthesises as the stage's top; `n` beats from `in` to `out`.
-template <typename Params>
-void ground_frame(Ground<Params>& g, const typename Params::in_beat* in,
-                  typename Params::out_beat* out, int n) {
+/// beat, in order. What an HLS tool synthesises as the stage's top; `n` beats from `in` to `out`,
+/// hls::stream (or ArrayIn / ArrayOut).
+template <typename Params, typename In, typename Out, if_port<Out> = 0>
+void ground_frame(Ground<Params>& g, In& in, Out& out, int n) {
+  // clang-format off
+#pragma HLS INTERFACE axis port=in
+#pragma HLS INTERFACE axis port=out
+#pragma HLS INTERFACE s_axilite port=n
+#pragma HLS INTERFACE s_axilite port=return
+  // clang-format on
 loop_beat:
   for (int i = 0; i < n; ++i) {
     // clang-format off
 #pragma HLS PIPELINE II=1
     // clang-format on
-    out[i] = g.step(in[i]);
+    out.write(g.step(in.read()));
   }
 }
 #pragma GCC diagnostic pop
+
+/// The frame function over arrays (tests).
+template <typename Params>
+void ground_frame(Ground<Params>& g, const typename Params::in_beat* in,
+                  typename Params::out_beat* out, int n) {
+  ArrayIn<typename Params::in_beat> i(in, n);
+  ArrayOut<typename Params::out_beat> o(out);
+  ground_frame(g, i, o, n);
+}
 
 }  // namespace scw::hls::ground

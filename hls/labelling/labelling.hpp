@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hls/common/reg_fifo.hpp"
+#include "hls/common/stream.hpp"
 #include "hls/labelling/labelling_lane.hpp"
 
 namespace scw::hls::labelling {
@@ -559,32 +560,53 @@ class Labelling {
 // The loop label names the loop in HLS reports; g++ would call it unused.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-label"
-/// Frames of beats through the stage with no output stalls: `n` beats from `in` (`frames` whole
+/// Frames of beats through the stage with no output stalls: beats from `in` (`frames` whole
 /// frames back to back), every object and status word to `out` (room for `max_out`), in order;
 /// returns how many words were written. The loop is one clock of the stage an iteration: it offers
 /// the next beat, which the stage takes when it is ready (in its frame phase, with room in the
 /// lane), and writes each word as it leaves, until `frames` status words have left or
-/// `max_clocks` run out. What an HLS tool synthesises as the stage's top.
-template <typename Params>
-int labelling_frame(Labelling<Params>& k, const typename Params::in_beat* in, int n,
-                    LabelPacket* out, int max_out, int frames, long max_clocks) {
-  int taken = 0, written = 0, closed = 0;
+/// `max_clocks` run out. The stage's ready looks at the beat's sof, so the beat waits in a
+/// look-ahead register (a stream cannot be peeked). What an HLS tool synthesises as the stage's
+/// top: the ports are hls::stream (or ArrayIn / ArrayOut).
+template <typename Params, typename In, typename Out, if_port<Out> = 0>
+int labelling_frame(Labelling<Params>& k, In& in, Out& out, int max_out, int frames,
+                    long max_clocks) {
+  // clang-format off
+#pragma HLS INTERFACE axis port=in
+#pragma HLS INTERFACE axis port=out
+#pragma HLS INTERFACE s_axilite port=max_out
+#pragma HLS INTERFACE s_axilite port=frames
+#pragma HLS INTERFACE s_axilite port=max_clocks
+#pragma HLS INTERFACE s_axilite port=return
+  // clang-format on
+  Lookahead<typename Params::in_beat> next;
+  int written = 0, closed = 0;
 loop_clock:
   for (long c = 0; c < max_clocks && closed < frames && written < max_out; ++c) {
     // clang-format off
 #pragma HLS PIPELINE II=1
     // clang-format on
-    const bool valid = taken < n;
-    const typename Params::in_beat beat = valid ? in[taken] : typename Params::in_beat{};
-    if (valid && k.in_ready(beat.sof)) ++taken;
-    k.clock(valid, beat, true);
+    next.fill(in);
+    const bool valid = next.valid;
+    if (valid && k.in_ready(next.beat.sof)) next.take();
+    k.clock(valid, next.beat, true);
     if (k.out_valid()) {
-      out[written++] = k.out();
+      out.write(k.out());
+      ++written;
       closed += k.out().data.is_status ? 1 : 0;
     }
   }
   return written;
 }
 #pragma GCC diagnostic pop
+
+/// The frame function over arrays (tests).
+template <typename Params>
+int labelling_frame(Labelling<Params>& k, const typename Params::in_beat* in, int n,
+                    LabelPacket* out, int max_out, int frames, long max_clocks) {
+  ArrayIn<typename Params::in_beat> i(in, n);
+  ArrayOut<LabelPacket> o(out);
+  return labelling_frame(k, i, o, max_out, frames, max_clocks);
+}
 
 }  // namespace scw::hls::labelling

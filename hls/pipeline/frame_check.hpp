@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/stream.hpp"
 
 namespace scw::hls::pipeline {
 
@@ -156,5 +157,34 @@ class FrameCheck {
   std::int64_t frames_ = 0;
   std::int64_t flagged_ = 0;
 };
+
+// The loop label names the loop in HLS reports; g++ would call it unused.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-label"
+/// `n` beats through the check with no stalls: every beat on to `out`, each frame's flag to
+/// `flags` as it leaves (with the frame's last beat, or with the sof that cut it short). What an
+/// HLS tool synthesises as the check's top; hls::stream ports (or ArrayIn / ArrayOut).
+template <int P, int MaxWidthPx, int MaxHeight, typename In, typename Out, typename Flags>
+void frame_check_frame(FrameCheck<P, MaxWidthPx, MaxHeight>& k, In& in, Out& out, Flags& flags,
+                       int n) {
+  // clang-format off
+#pragma HLS INTERFACE axis port=in
+#pragma HLS INTERFACE axis port=out
+#pragma HLS INTERFACE axis port=flags
+#pragma HLS INTERFACE s_axilite port=n
+#pragma HLS INTERFACE s_axilite port=return
+  // clang-format on
+loop_beat:
+  for (int i = 0; i < n; ++i) {
+    // clang-format off
+#pragma HLS PIPELINE II=1
+    // clang-format on
+    const Beat<pixel_t, P> b = in.read();
+    FrameFlag f;
+    if (k.step(b, f)) flags.write(FrameFlagPacket{f, true});
+    out.write(b);
+  }
+}
+#pragma GCC diagnostic pop
 
 }  // namespace scw::hls::pipeline

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "hls/common/beat.hpp"
+#include "hls/common/stream.hpp"
 #include "hls/pipeline/frame_check.hpp"
 #include "hls/warning/warning_params.hpp"
 
@@ -64,5 +65,41 @@ class ResultMerge {
   bool valid_ = false, adv_ = false, take_ = false;
   PipelineResultPacket out_{}, next_{};
 };
+
+// The loop label names the loop in HLS reports; g++ would call it unused.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-label"
+/// `frames` frame results joined with their two input flags, no output stalls; each input waits
+/// in a look-ahead register until all three are there. Stops when `frames` results have left or
+/// after `max_clocks`; returns how many left.
+template <typename ResIn, typename FlagIn, typename Out>
+int merge_frame(ResultMerge& m, ResIn& res, FlagIn& left, FlagIn& right, Out& out, int frames,
+                long max_clocks) {
+  Lookahead<warning::ResultPacket> r;
+  Lookahead<FlagPacket> l, f;
+  int written = 0;
+loop_clock:
+  for (long c = 0; c < max_clocks && written < frames; ++c) {
+    // clang-format off
+#pragma HLS PIPELINE II=1
+    // clang-format on
+    r.fill(res);
+    l.fill(left);
+    f.fill(right);
+    const auto o = m.eval(r.valid, r.beat, l.valid, l.beat, f.valid, f.beat, true);
+    if (o.in_ready) {
+      r.take();
+      l.take();
+      f.take();
+    }
+    m.tick();
+    if (o.out_valid) {
+      out.write(o.out);
+      ++written;
+    }
+  }
+  return written;
+}
+#pragma GCC diagnostic pop
 
 }  // namespace scw::hls::pipeline

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/stream.hpp"
 #include "hls/rectify/rectify_params.hpp"
 
 namespace scw::hls::rectify {
@@ -150,6 +151,10 @@ class MapGrid {
     const int du0 = u & (G - 1), dv = v & (G - 1);
     // The RTL keeps knots in four RAMs by (row parity, column parity), so K00, K10, K01, K11
     // are always four different RAMs: ARRAY_PARTITION cyclic factor=2 on both dimensions.
+    // clang-format off
+#pragma HLS ARRAY_PARTITION variable=knots_ cyclic factor=2 dim=1
+#pragma HLS ARRAY_PARTITION variable=knots_ cyclic factor=2 dim=2
+    // clang-format on
     const KnotPoint& k00 = knot(i, j);
     const KnotPoint& k10 = knot(i + 1, j);
     const KnotPoint& k01 = knot(i, j + 1);
@@ -197,5 +202,44 @@ class MapGrid {
   std::array<std::array<KnotPoint, Params::kMaxKnotCols>, Params::kMaxKnotRows> knots_{};
   Pos pos_;
 };
+
+// The loop labels name the loops in HLS reports; g++ would call them unused.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-label"
+/// The knot write port driven from an array of `cols` x `rows` knots (row after row), one knot
+/// a clock, as sim::load_knots and the pipeline top's knot port load them.
+template <typename Params>
+void map_grid_load(MapGrid<Params>& g, const KnotPoint* knots, int cols, int rows) {
+loop_knot_row:
+  for (int j = 0; j < rows; ++j) {
+  loop_knot_col:
+    for (int i = 0; i < cols; ++i) {
+      // clang-format off
+#pragma HLS PIPELINE II=1
+      // clang-format on
+      g.write_knot(i, j, knots[j * cols + i]);
+    }
+  }
+}
+
+/// `n` map beats (frames of the configured size, back to back, continuing where the last call
+/// stopped) to `out`, one a clock. What an HLS tool synthesises as the expander's top, after
+/// map_grid_load; the port is hls::stream (or ArrayOut).
+template <typename Params, typename Out, if_port<Out> = 0>
+void map_grid_frame(MapGrid<Params>& g, Out& out, int n) {
+  // clang-format off
+#pragma HLS INTERFACE axis port=out
+#pragma HLS INTERFACE s_axilite port=n
+#pragma HLS INTERFACE s_axilite port=return
+  // clang-format on
+loop_beat:
+  for (int i = 0; i < n; ++i) {
+    // clang-format off
+#pragma HLS PIPELINE II=1
+    // clang-format on
+    out.write(g.step());
+  }
+}
+#pragma GCC diagnostic pop
 
 }  // namespace scw::hls::rectify

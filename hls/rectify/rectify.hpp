@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/stream.hpp"
 #include "hls/rectify/map_taps.hpp"
 #include "hls/rectify/rectify_params.hpp"
 
@@ -195,6 +196,12 @@ class Rectify {
   /// a = f00 S + (f10 - f00) fx = f00 (S - fx) + f10 fx exactly, likewise b; then
   /// (a S + (b - a) fy + S^2 / 2) >> 2F is the formula of architecture 4.1.
   pixel_t sample(const MapPoint& m) {
+    // The four taps fall in four banks by row and column parity (see buf_), so one clock reads
+    // them all. P-fold replication for the P lanes is left to the tool (not tried).
+    // clang-format off
+#pragma HLS ARRAY_PARTITION variable=buf_ cyclic factor=2 dim=1
+#pragma HLS ARRAY_PARTITION variable=buf_ cyclic factor=2 dim=2
+    // clang-format on
     const Taps t = decode_taps<F>(m, cfg_.width, cfg_.height);
     const int dy = t.y0 - out_.row;
     const bool use0 = t.row0 && in_row_window(dy, cfg_.lead_rows, R);
@@ -237,31 +244,49 @@ class Rectify {
 /// loop is one clock of the stage an iteration: each port takes its next beat when the stage is
 /// ready for it, and every beat the reader forms is written. With the output never stalled, the
 /// writer's look at the pipeline (`pending`) is whether the last beat formed closed a row. What an
-/// HLS tool synthesises as the stage's top.
-template <typename Params>
-int rectify_frame(Rectify<Params>& k, const typename Rectify<Params>::raw_type* raw,
-                  const typename Rectify<Params>::map_type* map,
-                  typename Rectify<Params>::out_type* out, int n, long max_clocks) {
+/// HLS tool synthesises as the stage's top: the ports are hls::stream (or ArrayIn / ArrayOut).
+template <typename Params, typename RawIn, typename MapIn, typename Out, if_port<Out> = 0>
+int rectify_frame(Rectify<Params>& k, RawIn& raw, MapIn& map, Out& out, int n, long max_clocks) {
+  // clang-format off
+#pragma HLS INTERFACE axis port=raw
+#pragma HLS INTERFACE axis port=map
+#pragma HLS INTERFACE axis port=out
+#pragma HLS INTERFACE s_axilite port=n
+#pragma HLS INTERFACE s_axilite port=max_clocks
+#pragma HLS INTERFACE s_axilite port=return
+  // clang-format on
   using Kernel = Rectify<Params>;
-  int raw_taken = 0, map_taken = 0, written = 0;
+  int written = 0;
   bool pending = false;
 loop_clock:
   for (long c = 0; c < max_clocks && written < n; ++c) {
     // clang-format off
 #pragma HLS PIPELINE II=1
     // clang-format on
-    const bool raw_take = raw_taken < n && k.raw_ready(pending);
-    const bool map_take = map_taken < n && k.map_ready(true);
-    const auto e = k.clock(pending, raw_take,
-                           raw_take ? raw[raw_taken] : typename Kernel::raw_type{}, true, map_take,
-                           map_take ? map[map_taken] : typename Kernel::map_type{});
-    raw_taken += raw_take ? 1 : 0;
-    map_taken += map_take ? 1 : 0;
+    const bool raw_take = !raw.empty() && k.raw_ready(pending);
+    const bool map_take = !map.empty() && k.map_ready(true);
+    const typename Kernel::raw_type r = raw_take ? raw.read() : typename Kernel::raw_type{};
+    const typename Kernel::map_type m = map_take ? map.read() : typename Kernel::map_type{};
+    const auto e = k.clock(pending, raw_take, r, true, map_take, m);
     pending = e.valid && e.beat.eol;
-    if (e.valid) out[written++] = e.beat;
+    if (e.valid) {
+      out.write(e.beat);
+      ++written;
+    }
   }
   return written;
 }
 #pragma GCC diagnostic pop
+
+/// The frame function over arrays of `n` beats each (tests, vector sets).
+template <typename Params>
+int rectify_frame(Rectify<Params>& k, const typename Rectify<Params>::raw_type* raw,
+                  const typename Rectify<Params>::map_type* map,
+                  typename Rectify<Params>::out_type* out, int n, long max_clocks) {
+  ArrayIn<typename Rectify<Params>::raw_type> r(raw, n);
+  ArrayIn<typename Rectify<Params>::map_type> m(map, n);
+  ArrayOut<typename Rectify<Params>::out_type> o(out);
+  return rectify_frame(k, r, m, o, n, max_clocks);
+}
 
 }  // namespace scw::hls::rectify

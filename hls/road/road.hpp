@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "hls/common/stream.hpp"
 #include "hls/road/road_params.hpp"
 
 namespace scw::hls::road {
@@ -104,20 +105,40 @@ class Road {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-label"
 /// Beats through the stage with no stalls, the fit run at every sof that needs it: one output
-/// beat per input beat, in order. What an HLS tool synthesises as the stage's top (the fit as a
-/// separate, non-pipelined region); `n` beats from `in` to `out`.
-template <typename Params>
-void road_frame(Road<Params>& r, const typename Params::in_beat* in,
-                typename Params::out_beat* out, int n) {
+/// beat per input beat, in order, and at each sof the line that frame is gated with to `lines`
+/// (the warning stage's road input). What an HLS tool synthesises as the stage's top (the fit as
+/// a separate, non-pipelined region); `n` beats from `in` to `out`. The ports are hls::stream (or
+/// ArrayIn / ArrayOut / Discard).
+template <typename Params, typename In, typename Out, typename Lines, if_port<Out> = 0>
+void road_frame(Road<Params>& r, In& in, Out& out, Lines& lines, int n) {
+  // clang-format off
+#pragma HLS INTERFACE axis port=in
+#pragma HLS INTERFACE axis port=out
+#pragma HLS INTERFACE axis port=lines
+#pragma HLS INTERFACE s_axilite port=n
+#pragma HLS INTERFACE s_axilite port=return
+  // clang-format on
 loop_beat:
   for (int i = 0; i < n; ++i) {
     // clang-format off
 #pragma HLS PIPELINE II=1
     // clang-format on
-    if (r.needs_fit(in[i])) r.fit();
-    out[i] = r.step(in[i]);
+    const typename Params::in_beat b = in.read();
+    if (r.needs_fit(b)) r.fit();
+    if (b.sof) lines.write(r.line());  // after the fit, as the RTL's line register samples it
+    out.write(r.step(b));
   }
 }
 #pragma GCC diagnostic pop
+
+/// The frame function over arrays, the lines dropped (tests, vector sets).
+template <typename Params>
+void road_frame(Road<Params>& r, const typename Params::in_beat* in,
+                typename Params::out_beat* out, int n) {
+  ArrayIn<typename Params::in_beat> i(in, n);
+  ArrayOut<typename Params::out_beat> o(out);
+  Discard lines;
+  road_frame(r, i, o, lines, n);
+}
 
 }  // namespace scw::hls::road

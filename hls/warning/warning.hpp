@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "hls/common/stream.hpp"
 #include "hls/labelling/labelling_params.hpp"
 #include "hls/warning/warning_params.hpp"
 
@@ -148,31 +149,63 @@ class Warning {
 // The loop label names the loop in HLS reports; g++ would call it unused.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-label"
-/// Object tables through the stage with no stalls: `n` words from `in` (one or more frames, each
-/// closed by its status word with `last`), one result per frame to `out`, in order; returns how
-/// many. With cfg.road_height, `roads` holds one road line a frame, taken with each frame's
-/// first word. The loop runs kLatency clocks past the last word so the last result leaves. What
-/// an HLS tool synthesises as the stage's top; `out` needs room for one result per frame (at
-/// most n).
-template <typename Params>
-int warning_frame(Warning<Params>& w, const labelling::LabelPacket* in, int n, ResultPacket* out,
-                  const RoadLine* roads = nullptr) {
-  int results = 0, road = 0;
-loop_word:
-  for (int i = 0; i < n + kLatency; ++i) {
+/// Object tables through the stage with no output stalls: `frames` frames of words from `in`
+/// (each closed by its status word with `last`), one result per frame to `out`, in order; returns
+/// how many. With cfg.road_height, `roads` holds one road line a frame, taken with each frame's
+/// first word. Word and line wait in look-ahead registers, so the stage sees them before taking
+/// them (the road decides whether a word is taken). The loop runs kLatency clocks past the last
+/// frame's status word so the last result leaves, or stops after `max_clocks`. What an HLS tool
+/// synthesises as the stage's top: the ports are hls::stream (or ArrayIn / ArrayOut).
+template <typename Params, typename In, typename Out, typename Roads, if_port<Out> = 0>
+int warning_frame(Warning<Params>& w, In& in, int frames, Out& out, Roads& roads,
+                  long max_clocks) {
+  // clang-format off
+#pragma HLS INTERFACE axis port=in
+#pragma HLS INTERFACE axis port=out
+#pragma HLS INTERFACE axis port=roads
+#pragma HLS INTERFACE s_axilite port=frames
+#pragma HLS INTERFACE s_axilite port=max_clocks
+#pragma HLS INTERFACE s_axilite port=return
+  // clang-format on
+  Lookahead<labelling::LabelPacket> word;
+  Lookahead<RoadLine> road;
+  int results = 0, closed = 0, tail = 0;
+loop_clock:
+  for (long c = 0; c < max_clocks && tail < kLatency; ++c) {
     // clang-format off
 #pragma HLS PIPELINE II=1
     // clang-format on
-    const bool valid = i < n;
-    const bool road_valid = roads != nullptr;
-    const bool take_road = road_valid && w.road_ready(valid, true);
-    w.clock(valid, valid ? in[i] : labelling::LabelPacket{}, true, road_valid,
-            road_valid ? roads[road] : RoadLine{});
-    if (take_road) ++road;
-    if (w.out_valid()) out[results++] = w.out();
+    if (closed == frames) ++tail;
+    if (closed < frames) word.fill(in);
+    road.fill(roads);
+    const bool take = word.valid && w.in_ready(true, road.valid);
+    const bool take_road = road.valid && w.road_ready(word.valid, true);
+    w.clock(word.valid, word.beat, true, road.valid, road.beat);
+    if (take_road) road.take();
+    if (take) {
+      closed += word.beat.last ? 1 : 0;
+      word.take();
+    }
+    if (w.out_valid()) {
+      out.write(w.out());
+      ++results;
+    }
   }
   return results;
 }
 #pragma GCC diagnostic pop
+
+/// The frame function over arrays (tests): `n` words, whole frames; `roads` may be null (no road
+/// input), else it holds one line a frame.
+template <typename Params>
+int warning_frame(Warning<Params>& w, const labelling::LabelPacket* in, int n, ResultPacket* out,
+                  const RoadLine* roads = nullptr) {
+  int frames = 0;
+  for (int i = 0; i < n; ++i) frames += in[i].last ? 1 : 0;
+  ArrayIn<labelling::LabelPacket> i(in, n);
+  ArrayOut<ResultPacket> o(out);
+  ArrayIn<RoadLine> r(roads, frames);
+  return warning_frame(w, i, frames, o, r, static_cast<long>(n) + kLatency);
+}
 
 }  // namespace scw::hls::warning

@@ -3,8 +3,12 @@
 // throughput and row latency in cycles.
 #include <catch2/catch.hpp>
 #include <memory>
+#include <random>
 
+#include "hls/common/stream.hpp"
+#include "hls/rectify/map_grid.hpp"
 #include "host/reference/rectify_ref.hpp"
+#include "sim/map_grid_model.hpp"
 #include "sim/rectify_model.hpp"
 #include "tests/common/primitive_configs.hpp"
 #include "tests/rectify/random_maps.hpp"
@@ -120,4 +124,60 @@ TEST_CASE("the frame function (the HLS top) equals the clocked model", "[rectify
     CHECK(out == r.out);
     CHECK(k->error() == 0);
   }
+}
+
+// The same top with the project's streams as ports (what an HLS tool sees), a frame a call: the
+// kernel keeps its state between calls, as the stage's registers do between frames.
+TEST_CASE("the frame function on streams, a frame a call, equals the clocked model",
+          "[rectify][hls]") {
+  using P1 = hls::rectify::RectifyParams<1, 32, 16, 8>;
+  constexpr int W = 32, H = 12, kBeats = W * H;
+  std::vector<test::RectifyFrame> frames;
+  for (std::uint64_t i = 0; i < 2; ++i)
+    frames.push_back({test::random_image(W, H, 60 + i), test::random_map(W, H, 5, 4, 8, 70 + i)});
+  const auto s = test::rectify_streams<P1>(frames, W, H);
+  sim::RectifyModel<P1> model(RectifyConfig{W, H, 4});
+  const auto r = sim::run_join(model, s.raw, s.map, {}, s.raw.size(), 1'000'000);
+  REQUIRE_FALSE(r.timed_out);
+  auto k = std::make_unique<hls::rectify::Rectify<P1>>(RectifyConfig{W, H, 4});
+  std::vector<P1::pixel_beat> got;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    hls::stream<P1::pixel_beat, kBeats> raw("raw"), out("out");
+    hls::stream<P1::map_beat, kBeats> map("map");
+    for (std::size_t i = f * kBeats; i < (f + 1) * kBeats; ++i) {
+      raw.write(s.raw[i]);
+      map.write(s.map[i]);
+    }
+    CHECK(hls::rectify::rectify_frame(*k, raw, map, out, kBeats, 1'000'000) == kBeats);
+    while (!out.empty()) got.push_back(out.read());
+  }
+  CHECK(got == r.out);
+  CHECK(k->error() == 0);
+}
+
+// The expander's top: knots loaded through its array port, then frames of map beats to a stream,
+// equal to the clocked expander (its RTL's twin) beat for beat.
+TEST_CASE("the map grid's frame function equals the clocked expander", "[rectify][hls]") {
+  using G = hls::rectify::MapGridParams<2, 32, 16, 2>;  // G = 4: 9 x 5 knots at 32 x 16
+  const hls::rectify::MapGridConfig cfg{32, 14};
+  const int cols = ((cfg.width - 1) >> G::kGridLog2) + 2, rows = ((cfg.height - 1) >> G::kGridLog2) + 2;
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> jitter(-300, 300);
+  std::vector<hls::rectify::KnotPoint> knots;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i)  // a scaled, sheared grid with jitter, Q.KnotFracBits
+      knots.push_back({(i * G::kGrid * 33 + j * 40) * (1 << G::kKnotFracBits) / 32 + jitter(rng),
+                       (j * G::kGrid) * (1 << G::kKnotFracBits) + jitter(rng)});
+  constexpr int kBeats = 2 * 32 * 14 / 2;  // two frames
+  sim::MapGridModel<G> model(cfg);
+  sim::load_knots(model, cols, rows, [&](int i, int j) { return knots[j * cols + i]; });
+  const auto r = sim::run_source(model, {}, kBeats);
+  REQUIRE(r.out.size() == static_cast<std::size_t>(kBeats));
+  auto g = std::make_unique<hls::rectify::MapGrid<G>>(cfg);
+  hls::rectify::map_grid_load(*g, knots.data(), cols, rows);
+  hls::stream<G::map_beat, kBeats> out("map");
+  hls::rectify::map_grid_frame(*g, out, kBeats);
+  std::vector<G::map_beat> got;
+  while (!out.empty()) got.push_back(out.read());
+  CHECK(got == r.out);
 }
