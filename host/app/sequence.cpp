@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// find_pairs(), frame_prefix(), read_pair() (host/app/sequence.hpp).
+// find_pairs(), pairs_of(), frame_prefix(), read_pair(), frame_note(), run_pairs()
+// (host/app/sequence.hpp).
 #include "host/app/sequence.hpp"
 
 #include <algorithm>
@@ -34,6 +35,18 @@ std::vector<PairFiles> find_pairs(const fs::path& dir) {
   return pairs;
 }
 
+std::vector<PairFiles> pairs_of(const std::string& left, const std::string& right,
+                                const std::string& sequence) {
+  if (!sequence.empty()) {
+    if (!left.empty() || !right.empty())
+      throw std::runtime_error("give either --left/--right or --sequence, not both");
+    return find_pairs(sequence);
+  }
+  if (left.empty() || right.empty())
+    throw std::runtime_error("give --left and --right (or --sequence DIR)");
+  return {{left, right}};
+}
+
 std::string frame_prefix(const fs::path& left) {
   std::string stem = left.stem().string();
   stem.erase(stem.find("left"), 4);
@@ -54,6 +67,13 @@ std::pair<cv::Mat, cv::Mat> read_pair(const PairFiles& p, cv::Size size) {
     throw std::runtime_error("pair '" + p.first.string() + "' differs in size from the first "
                              "pair: every pair of a sequence must have one size");
   return {l, r};
+}
+
+std::string frame_note(const FrameOutput& f) {
+  std::string note = severity_name(f.result.severity);
+  if (f.deciding_label > 0)
+    note += " at " + std::to_string(f.result.distance_mm / 1000.0).substr(0, 5) + " m";
+  return note;
 }
 
 void run_pairs(Runner& runner, const std::vector<PairFiles>& pairs, cv::Size size,

@@ -24,6 +24,11 @@ using PairFiles = std::pair<std::filesystem::path, std::filesystem::path>;
 /// Throws std::runtime_error when `dir` is not a folder or holds no pair, saying how to name them.
 std::vector<PairFiles> find_pairs(const std::filesystem::path& dir);
 
+/// The pairs a run takes: the folder `sequence`'s (find_pairs), or the one pair `left`, `right`.
+/// Throws std::runtime_error, naming the options, when both or neither are given.
+std::vector<PairFiles> pairs_of(const std::string& left, const std::string& right,
+                                const std::string& sequence);
+
 /// "0001_left.png" -> "0001_": what a frame's output files start with in a sequence.
 std::string frame_prefix(const std::filesystem::path& left);
 
@@ -34,6 +39,10 @@ std::pair<cv::Mat, cv::Mat> read_pair(const PairFiles& p, cv::Size size = {});
 
 /// Called after each frame with its position, its output and its results.jsonl line.
 using FrameDone = std::function<void(std::size_t, const FrameOutput&, const nlohmann::json&)>;
+
+/// A frame's note for progress: its severity and, when an object decided it, the distance
+/// ("high at 4.219 m").
+std::string frame_note(const FrameOutput& f);
 
 /// Runs `pairs` (all of `size`) through `runner` in order, writing each frame's files
 /// (write_frame; prefixed by frame_prefix when there is more than one pair) and its line of

@@ -3,13 +3,10 @@
 // rectified pair, disparity, labels, the warning overlay and results.jsonl (docs/run.md).
 #include <iostream>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <tuple>
-#include <vector>
 
 #include "host/app/camera.hpp"
-#include "host/app/frame_files.hpp"
 #include "host/app/run.hpp"
 #include "host/app/sequence.hpp"
 #include "host/cli/commands.hpp"
@@ -30,21 +27,10 @@ struct Options {
   app::RunOptions run;
 };
 
-std::vector<app::PairFiles> pairs_of(const Options& o) {
-  if (!o.sequence.empty()) {
-    if (!o.left.empty() || !o.right.empty())
-      throw std::runtime_error("give either --left/--right or --sequence, not both");
-    return app::find_pairs(o.sequence);
-  }
-  if (o.left.empty() || o.right.empty())
-    throw std::runtime_error("give --left and --right (or --sequence DIR)");
-  return {{o.left, o.right}};
-}
-
 void run(Options& o) {
   if (!o.tiles.empty()) std::tie(o.run.tiles_x, o.run.tiles_y) = labelling::parse_tiles(o.tiles);
   o.run.mode = disparity::mode_from_name(o.mode);
-  const auto pairs = pairs_of(o);
+  const auto pairs = app::pairs_of(o.left, o.right, o.sequence);
   const cv::Mat first = host::io::read_grey_image(pairs.front().first.string());
   auto camera = app::set_up_camera(o.camera, first.size(), o.run.warning);
   const auto& w = o.run.warning;
@@ -65,11 +51,7 @@ void run(Options& o) {
   Progress progress(pairs.size());
   app::run_pairs(runner, pairs, first.size(), o.out_dir,
                  [&](std::size_t i, const app::FrameOutput& f, const nlohmann::json& j) {
-                   std::string note = std::string(app::severity_name(f.result.severity));
-                   if (f.deciding_label > 0)
-                     note += " at " + std::to_string(f.result.distance_mm / 1000.0).substr(0, 5) +
-                             " m";
-                   if (pairs.size() > 1) progress.show(i + 1, note);
+                   if (pairs.size() > 1) progress.show(i + 1, app::frame_note(f));
                    else std::cout << j.dump() << "\n";
                  });
   std::cout << "wrote " << pairs.size() << (pairs.size() == 1 ? " frame" : " frames") << " in "

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// `scw train`: trains an object classifier on feature rows, saves it, prints Table 5.6's rates.
-#include <algorithm>
-#include <cstdio>
+// `scw train`: trains an object classifier on feature rows, saves it, prints Table 5.6's rates
+// (the work is host/app/classify.hpp's).
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -15,8 +14,6 @@
 namespace scw::cli {
 namespace {
 
-using app::ObjectClass;
-
 struct Options {
   std::string features, out, model = "svm", test, features_out;
   int synthesize = 0;
@@ -24,63 +21,6 @@ struct Options {
   std::string svm_kernel = "rbf";
   app::TrainOptions train;
 };
-
-std::string counts(const std::vector<app::LabelledFeatures>& rows) {
-  int n[app::kNumClasses] = {};
-  for (const auto& r : rows) ++n[static_cast<int>(r.cls)];
-  return std::to_string(rows.size()) + " rows (" + std::to_string(n[1]) + " pedestrian, " +
-         std::to_string(n[2]) + " bike, " + std::to_string(n[0]) + " other)";
-}
-
-std::string pct(double v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "%6.2f%%", v);
-  return b;
-}
-
-std::string num(int v, int w) {
-  char b[16];
-  std::snprintf(b, sizeof b, "%*d", w, v);
-  return b;
-}
-
-/// One row of the rates table: Table 5.6's columns, with each class's row count since a
-/// training and a test set differ. Each class takes 26 columns: n, correct, false.
-void print_rates(const std::string& name, std::size_t width, const app::Evaluation& e) {
-  std::string line = name;
-  line.resize(width, ' ');
-  for (const ObjectClass c : {ObjectClass::kPedestrian, ObjectClass::kBike}) {
-    const auto& r = e[c];
-    line += num(r.rows, 6) + "  " + pct(r.correct_pct()) + "  " + pct(r.false_pct()) + "  ";
-  }
-  const auto& o = e[ObjectClass::kOther];
-  line += num(o.rows, 6) + "  " + pct(o.false_pct());
-  std::cout << line << "\n";
-}
-
-void print_header(std::size_t width) {
-  std::string names(width, ' ');
-  names += "  pedestrian";
-  names.resize(width + 26, ' ');
-  names += "  bike";
-  names.resize(width + 52, ' ');
-  names += "  other";
-  std::cout << names << "\n"
-            << std::string(width, ' ')
-            << "     n  correct    false       n  correct    false       n    false\n";
-}
-
-void print_confusion(const std::string& name, const app::Evaluation& e) {
-  std::cout << "\n" << name << ", rows by true class, columns by result:\n";
-  std::cout << "              pedestrian      bike     other\n";
-  for (const ObjectClass t : {ObjectClass::kPedestrian, ObjectClass::kBike, ObjectClass::kOther}) {
-    std::string line = std::string("  ") + app::to_string(t);
-    line.resize(12, ' ');
-    for (const ObjectClass p : {ObjectClass::kPedestrian, ObjectClass::kBike, ObjectClass::kOther})
-      line += num(e.confusion[static_cast<int>(t)][static_cast<int>(p)], 10);
-    std::cout << line << "\n";
-  }
-}
 
 void run(Options& o) {
   if (o.features.empty() && o.synthesize == 0)
@@ -97,8 +37,8 @@ void run(Options& o) {
     rows = app::synthesize_table54(o.synthesize, o.seed);
     source = o.features_out.empty() ? "synthetic rows" : o.features_out;
     if (!o.features_out.empty()) app::write_feature_csv(o.features_out, rows);
-    std::cout << "scw train: " << (o.features_out.empty() ? "drew " : "wrote ") << counts(rows)
-              << (o.features_out.empty() ? "" : " to " + o.features_out)
+    std::cout << "scw train: " << (o.features_out.empty() ? "drew " : "wrote ")
+              << app::row_counts(rows) << (o.features_out.empty() ? "" : " to " + o.features_out)
               << ": SYNTHETIC stand-ins drawn from Table 5.4's means and deviations (seed "
               << o.seed << "), not the thesis's samples (docs/classify.md)\n";
   } else {
@@ -118,8 +58,8 @@ void run(Options& o) {
   const app::ModelKind kind = app::model_kind_from_string(o.model);
   o.train.svm_linear = o.svm_kernel == "linear";
   o.train.source = source;
-  std::cout << "scw train: " << app::to_string(kind) << " on " << counts(rows) << " of " << source
-            << "\n";
+  std::cout << "scw train: " << app::to_string(kind) << " on " << app::row_counts(rows) << " of "
+            << source << "\n";
   const auto classifier = app::train_classifier(kind, rows, o.train);
   classifier->save(o.out);
   std::cout << "scw train: " << classifier->describe() << ", saved to " << o.out << "\n";
@@ -127,14 +67,8 @@ void run(Options& o) {
   std::vector<std::pair<std::string, app::Evaluation>> sets;
   sets.emplace_back("training (" + source + ")", app::evaluate(*classifier, rows));
   if (!o.test.empty()) sets.emplace_back("test (" + o.test + ")", app::evaluate(*classifier, test));
-  // Table 5.6: correct = classified as its class; false = a pedestrian taken for a bike or the
-  // reverse; other's false = taken for a pedestrian or a bike.
-  std::size_t width = 0;
-  for (const auto& set : sets) width = std::max(width, set.first.size() + 2);
-  std::cout << "\n";
-  print_header(width);
-  for (const auto& [name, e] : sets) print_rates(name, width, e);
-  for (const auto& [name, e] : sets) print_confusion(name, e);
+  std::cout << "\n" << app::rates_table(sets);
+  for (const auto& [name, e] : sets) std::cout << "\n" << app::confusion_table(name, e);
 }
 
 }  // namespace
