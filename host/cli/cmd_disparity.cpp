@@ -7,6 +7,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/value_checks.hpp"
 #include "host/disparity/disparity_files.hpp"
 
 namespace scw::cli {
@@ -38,7 +39,9 @@ void add_disparity_command(CLI::App& app) {
   cmd->add_option("--right", o->right, "Rectified right image")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--window", o->window, "SAD window N (N x N), built: " + windows)->required();
+  cmd->add_option("--window", o->window, "SAD window N (N x N), built: " + windows)
+      ->required()
+      ->check(odd_window());
   cmd->add_option("--min-disp", o->min_disp, "Smallest candidate disparity (>= 0)")->required();
   cmd->add_option("--max-disp", o->max_disp,
                   "Largest candidate; at most " + std::to_string(disparity::kHostMaxNumDisp) +
@@ -55,12 +58,12 @@ void add_disparity_command(CLI::App& app) {
                   "x-Sobel cap (opencv mode's prefilter; also the texture measure's offset)")
       ->check(CLI::Range(1, 63));
   cmd->add_option("--texture", o->texture, "Texture threshold, 0 = off (overrides the mode)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative("", "10"));
   cmd->add_option("--uniqueness", o->uniqueness,
                   "Uniqueness ratio in %, 0 = off (overrides the mode)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative("%", "15"));
   cmd->add_option("--sad-limit", o->sad_limit, "Reject a minimum SAD above this, 0 = off")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative("", "0"));
   cmd->add_option("--out", o->out,
                   "8-bit PNG: 0 = invalid, else the integer disparity (x16 value >> 4, at most "
                   "255); with --min-disp 0 a valid d below 1 also reads 0")

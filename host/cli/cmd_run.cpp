@@ -11,6 +11,7 @@
 #include "host/app/sequence.hpp"
 #include "host/cli/commands.hpp"
 #include "host/cli/progress.hpp"
+#include "host/cli/value_checks.hpp"
 #include "host/io/image_file.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/pipeline/rtl_engine.hpp"
@@ -21,9 +22,7 @@ namespace {
 struct Options {
   std::string left, right, sequence, out_dir;
   app::CameraInput camera;
-  std::string engine = "cpp";
-  std::string mode = disparity::mode_name(disparity::kDefaultMode);
-  std::string tiles;
+  std::string tiles, engine = "cpp", mode = disparity::mode_name(disparity::kDefaultMode);
   app::RunOptions run;
 };
 
@@ -73,43 +72,47 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--rectified", o->camera.rectified, "The pairs are already rectified: skip rectification");
   cmd->add_option("--focal", o->camera.focal, "With --rectified: focal length, px");
   cmd->add_option("--baseline", o->camera.baseline, "With --rectified: baseline, m");
-  cmd->add_option("--cx", o->camera.cx, "With --rectified: principal point u, px (default: image centre)");
-  cmd->add_option("--cy", o->camera.cy, "With --rectified: principal point v, px (default: image centre)");
+  cmd->add_option("--cx", o->camera.cx, "With --rectified: principal point u, px (default: image centre)")
+      ->check(non_negative("px", "319.5"));
+  cmd->add_option("--cy", o->camera.cy, "With --rectified: principal point v, px (default: image centre)")
+      ->check(non_negative("px", "239.5"));
   cmd->add_option("--calib-unit-m", o->camera.calib_unit_m,
                   "Metres per calibration unit (e.g. the chessboard square), default 1")->capture_default_str();
   cmd->add_option("--engine", o->engine,
                   "cpp: the stages' C++ models; rtl: every block Verilated (rectified pairs, a "
                   "built size: small up to 128 x 96, window 9, 16 disparities, 2x2 tiles)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"cpp", "rtl"}));
+      ->capture_default_str()->check(CLI::IsMember({"cpp", "rtl"}));
   cmd->add_option("--maps", o->camera.maps,
                   "Raw pairs on --engine cpp: full (the calibration's maps, quantised) or grid "
                   "(knots every 2^--grid-log2 px, expanded as the RTL's map-grid stage does; "
                   "--engine rtl always runs grid knots at its build's spacing)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"full", "grid"}));
+      ->capture_default_str()->check(CLI::IsMember({"full", "grid"}));
   cmd->add_option("--grid-log2", o->camera.grid_log2,
                   "Knot spacing of --maps grid, log2 px (4: the thesis build's 16 px)")
-      ->capture_default_str()
-      ->check(CLI::Range(2, 7));
+      ->capture_default_str()->check(CLI::Range(2, 7));
   cmd->add_option("--tiles", o->tiles, "Labelling tile grid, columns x rows (default 4x4)");
-  cmd->add_option("--window", o->run.window, "SAD window N")->capture_default_str();
-  cmd->add_option("--min-disp", o->run.min_disp, "Smallest candidate disparity")->capture_default_str();
+  cmd->add_option("--window", o->run.window, "SAD window N")->capture_default_str()->check(odd_window());
+  cmd->add_option("--min-disp", o->run.min_disp, "Smallest candidate disparity")->capture_default_str()
+      ->check(non_negative("px", "0"));
   cmd->add_option("--max-disp", o->run.max_disp,
-                  "Largest candidate; objects reaching it are flagged too_close")->capture_default_str();
+                  "Largest candidate; objects reaching it are flagged too_close")
+      ->capture_default_str()->check(positive("px", "64"));
   cmd->add_option("--mode", o->mode, "Disparity mode (scw disparity --help)")->capture_default_str()
       ->check(CLI::IsMember({"thesis", "opencv"}));
-  cmd->add_option("--min-area", o->run.min_area, "Smallest object, px")->capture_default_str();
+  cmd->add_option("--min-area", o->run.min_area, "Smallest object, px")->capture_default_str()
+      ->check(non_negative("px", "50"));
   cmd->add_flag("!--no-road", o->run.road,
                 "Keep the road in the labelling's input (the road stage passes every pixel)");
   cmd->add_flag("--ground", o->run.ground, "Ground-plane removal (thesis 6.2) before labelling");
   cmd->add_option("--camera-height", o->run.camera_height_m,
-                  "Camera height above the road, m (the road stage's first road, ground removal's slope)")->capture_default_str();
+                  "Camera height above the road, m (the road stage's first road, ground removal's slope)")->capture_default_str()
+      ->check(positive("m", "1.2"));
   cmd->add_option("--camera-pitch", o->run.camera_pitch_deg,
                   "Camera's downward pitch, degrees (the road stage's first horizon; the road "
                   "it fits replaces it)")->capture_default_str();
   cmd->add_option("--min-height", o->run.warning.min_height_m,
-                  "Lower objects are not obstacles (road markings), m")->capture_default_str();
+                  "Lower objects are not obstacles (road markings), m")->capture_default_str()
+      ->check(non_negative("m", "0.5"));
   cmd->add_option_function<std::string>(
          "--distance-rule",
          [o](const std::string& rule) {
@@ -121,22 +124,22 @@ void add_run_command(CLI::App& app) {
       ->check(CLI::IsMember({"spread", "closest"}));
   cmd->add_option("--spread-k", o->run.warning.spread_k,
                   "k of the spread rule, 0 .. 15.9375 (steps of 1/16)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 15.9375));
+      ->capture_default_str()->check(CLI::Range(0.0, 15.9375));
   cmd->add_option("--near", o->run.warning.near_m,
-                  "Outside the tunnel: medium when this close to it, m")->capture_default_str();
-  cmd->add_option("--car-width", o->run.warning.car_width_m, "Car width, m (tunnel: 1.5x)")->capture_default_str();
-  cmd->add_option("--car-height", o->run.warning.car_height_m, "Car height, m (tunnel: 1.5x)")->capture_default_str();
-  cmd->add_option("--classifier", o->run.classifier,
-                  "Model from scw train (SVM or neural network); default: the parallelepiped "
-                  "classifier of Table 5.4")
-      ->check(CLI::ExistingFile);
+                  "Outside the tunnel: medium when this close to it, m")->capture_default_str()
+      ->check(non_negative("m", "1"));
+  cmd->add_option("--car-width", o->run.warning.car_width_m, "Car width, m (tunnel: 1.5x)")->capture_default_str()
+      ->check(positive("m", "1.8"));
+  cmd->add_option("--car-height", o->run.warning.car_height_m, "Car height, m (tunnel: 1.5x)")->capture_default_str()
+      ->check(positive("m", "1.5"));
+  cmd->add_option("--classifier", o->run.classifier, "Model from scw train (SVM or neural network); "
+                  "default: the parallelepiped classifier of Table 5.4")->check(CLI::ExistingFile);
   cmd->add_option("--classifier-s", o->run.classifier_s,
                   "The parallelepiped classifier's interval m +- s sigma (Table 5.5)")
-      ->capture_default_str();
+      ->capture_default_str()->check(positive("sigma", "2"));
   cmd->add_flag("--kalman", o->run.kalman, "Track with a cv::KalmanFilter (constant velocity)");
   cmd->add_option("--frame-period", o->run.frame_period_s, "Seconds between frames (speed)")
-      ->capture_default_str();
+      ->capture_default_str()->check(positive("s", "0.01"));
   cmd->add_flag("--overlay-on-labels", o->run.overlay_on_labels,
                 "Draw the overlay on the label picture instead of the left image");
   cmd->callback([o] { run(*o); });

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/value_checks.hpp"
 #include "host/io/image_file.hpp"
 #include "host/labelling/picture.hpp"
 #include "host/labelling/postprocess.hpp"
@@ -102,7 +103,7 @@ void add_segment_command(CLI::App& app) {
                   "Objects with fewer pixels are not reported (noise removal); 1 keeps every "
                   "object, as fits noise-free maps such as ground truth")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive("px", "50"));
   const std::string max_tiles =
       std::to_string(labelling::kHostMaxTiles) + "x" + std::to_string(labelling::kHostMaxTiles);
   cmd->add_option("--tiles", o->tiles,

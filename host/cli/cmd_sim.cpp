@@ -10,6 +10,7 @@
 
 #include "host/app/run.hpp"
 #include "host/cli/commands.hpp"
+#include "host/cli/value_checks.hpp"
 #include "host/pipeline/sim_run.hpp"
 #include "host/pipeline/thesis_figures.hpp"
 
@@ -115,8 +116,10 @@ void add_sim_command(CLI::App& app) {
   cmd->add_option("--left", s.left, "left image (default: a synthetic street scene)");
   cmd->add_option("--right", s.right, "right image");
   cmd->add_option("--mode", s.mode, "disparity mode: thesis or opencv")->capture_default_str();
-  cmd->add_option("--min-disp", s.dmin, "smallest disparity (default: the configuration's)");
-  cmd->add_option("--num-disp", s.num_disp, "candidates (default: the configuration's)");
+  cmd->add_option("--min-disp", s.dmin, "smallest disparity (default: the configuration's)")
+      ->check(non_negative("px", "20"));
+  cmd->add_option("--num-disp", s.num_disp, "candidates (default: the configuration's)")
+      ->check(positive("", "45"));
   cmd->add_option("--stalls", s.stalls,
                   "input gaps and output backpressure: none, idle, backpressure, both, random:SEED")
       ->capture_default_str();
