@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "host/app/classifiers_ml.hpp"
+#include "host/io/file_storage.hpp"
 
 namespace scw::app {
 
@@ -132,12 +133,14 @@ void AnnClassifier::save(const std::string& path) const {
   save_ml(path, kind(), scaling_, kAnnNode, *ann_);
 }
 
-std::unique_ptr<Classifier> load_classifier(const std::string& path) {
+namespace {
+
+std::unique_ptr<Classifier> read_classifier(const std::string& path) {
   // Checked first: cv::FileStorage would also log its own error line to stderr.
   if (!std::ifstream(path)) throw std::runtime_error("cannot open model '" + path + "'");
   cv::FileStorage fs;
   try {
-    fs.open(path, cv::FileStorage::READ);
+    fs = host::io::open_file_storage(path, "model '" + path + "'");
   } catch (const cv::Exception& e) {
     throw std::runtime_error("cannot read model '" + path +
                              "': not a cv::FileStorage file (YAML, XML or JSON) written by "
@@ -210,6 +213,25 @@ std::unique_ptr<Classifier> load_classifier(const std::string& path) {
   }
   throw std::runtime_error("model '" + path + "': its " + node +
                            " is not a trained model of 5 features and 3 classes");
+}
+
+}  // namespace
+
+std::unique_ptr<Classifier> load_classifier(const std::string& path) {
+  // cv::FileStorage throws from any read of a node that is not what the read expects (a list of
+  // text where numbers belong, say); the checks above name the common faults and throw
+  // runtime_error, this the rest.
+  try {
+    return read_classifier(path);
+  } catch (const std::runtime_error&) {
+    throw;
+  } catch (const cv::Exception& e) {
+    throw std::runtime_error("model '" + path + "' is damaged, not a model `scw train` wrote (" +
+                             e.err + ")");
+  } catch (const std::exception& e) {  // from OpenCV's parser: a garbled string, say
+    throw std::runtime_error("model '" + path + "' is damaged, not a model `scw train` wrote (" +
+                             std::string(e.what()) + ")");
+  }
 }
 
 }  // namespace scw::app

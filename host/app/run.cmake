@@ -3,6 +3,7 @@
 target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/app/run.cpp)
 target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/app/group.cpp)
 # What `scw run` reads and writes around the chain: the pairs, the camera, the frame's files.
-target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/app/sequence.cpp
+target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/app/pair_files.cpp
+                                ${CMAKE_CURRENT_SOURCE_DIR}/app/sequence.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/app/camera.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/app/frame_files.cpp)

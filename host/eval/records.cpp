@@ -83,11 +83,16 @@ void for_each_object(std::istream& in, const std::string& name, const char* fix,
     json j;
     try {
       j = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large
       w.fail(std::string("not JSON (") + e.what() + ")");
     }
     if (!j.is_object()) w.fail("not a JSON object");
-    const int frame = take(j, w);
+    int frame = 0;
+    try {
+      frame = take(j, w);
+    } catch (const json::exception& e) {  // a value take()'s checks let through
+      w.fail(std::string("a field does not hold what it should (") + e.what() + ")");
+    }
     const auto [it, fresh] = first_line.emplace(frame, line);
     if (!fresh)
       w.fail("frame " + std::to_string(frame) + " again (first on line " +
@@ -160,7 +165,7 @@ TruthFile read_truth(const fs::path& dir) {
     json j;
     try {
       j = json::parse(s);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {
       throw std::runtime_error("'" + scene.string() + "' is not JSON (" + e.what() + "); " +
                                kTruthFix);
     }

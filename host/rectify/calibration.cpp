@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "host/io/file_storage.hpp"
+
 namespace scw::rectify {
 namespace {
 
@@ -15,6 +17,9 @@ const char* const kFormatHint =
     "write it with cv::FileStorage as OpenCV's stereo_calib sample does "
     "(fs << \"M1\" << M1 << \"D1\" << D1 << ... after cv::stereoCalibrate); see "
     "data/chessboard/derived_stereo_calibration_helper.yml for an example";
+
+/// The largest side of any calibration matrix (D: 1 x 14).
+constexpr int kMaxSide = 16;
 
 std::string shape(const cv::Mat& m) {
   return std::to_string(m.rows) + "x" + std::to_string(m.cols) +
@@ -31,6 +36,18 @@ cv::Mat read_matrix(const cv::FileStorage& fs, const std::string& path, const st
   const cv::FileNode node = fs[name];
   if (node.empty() || node.isNone())
     fail(path, "node '" + name + "' is missing; expected " + expected + "; " + kFormatHint);
+  // cv::FileStorage allocates the size a matrix node declares before it reads the data, so a
+  // damaged rows or cols would ask for gigabytes: a calibration's matrices are small.
+  if (node.isMap()) {
+    const cv::FileNode rows = node["rows"], cols = node["cols"];
+    const auto small = [](const cv::FileNode& n) {
+      return n.isInt() && static_cast<int>(n) >= 1 && static_cast<int>(n) <= kMaxSide;
+    };
+    if (!small(rows) || !small(cols))
+      fail(path, "node '" + name + "' does not declare rows and cols from 1 to " +
+                     std::to_string(kMaxSide) + "; expected " + expected +
+                     " written as !!opencv-matrix");
+  }
   cv::Mat m;
   try {
     node >> m;
@@ -84,9 +101,7 @@ int read_size_node(const cv::FileStorage& fs, const std::string& path, const std
   return static_cast<int>(node);
 }
 
-}  // namespace
-
-StereoCalibration load_stereo_calibration(const std::string& path, cv::Size fallback_size) {
+StereoCalibration read_stereo_calibration(const std::string& path, cv::Size fallback_size) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     fail(path,
@@ -97,7 +112,7 @@ StereoCalibration load_stereo_calibration(const std::string& path, cv::Size fall
     fail(path, std::string("the file is empty; ") + kFormatHint);
   cv::FileStorage fs;
   try {
-    fs.open(path, cv::FileStorage::READ);
+    fs = host::io::open_file_storage(path, "calibration '" + path + "'");
   } catch (const cv::Exception& e) {
     fail(path, "not an OpenCV FileStorage file (YAML starting with %YAML:1.0, XML or JSON): " +
                    e.err + "; " + kFormatHint);
@@ -147,6 +162,24 @@ StereoCalibration load_stereo_calibration(const std::string& path, cv::Size fall
          "add them (the calibration images' size in pixels) or pass the images");
   }
   return c;
+}
+
+}  // namespace
+
+StereoCalibration load_stereo_calibration(const std::string& path, cv::Size fallback_size) {
+  // cv::FileStorage throws from a read the file's structure does not allow (a key looked up in
+  // a list: cv::Exception; a garbled string: std::length_error); the checks in
+  // read_stereo_calibration name the common faults and throw runtime_error, this the rest.
+  try {
+    return read_stereo_calibration(path, fallback_size);
+  } catch (const std::runtime_error&) {
+    throw;
+  } catch (const cv::Exception& e) {
+    fail(path, "the file is damaged: OpenCV cannot read it (" + e.err + "); " + kFormatHint);
+  } catch (const std::exception& e) {
+    fail(path, std::string("the file is damaged: OpenCV cannot read it (") + e.what() + "); " +
+                   kFormatHint);
+  }
 }
 
 double StereoRectification::focal_px() const { return P1.at<double>(0, 0); }
