@@ -2,11 +2,9 @@
 // The disparity kernel clocked as a join model: (left pixels, right pixels) -> disparities.
 #pragma once
 
-#include <array>
-#include <optional>
-
 #include "hls/disparity/disparity.hpp"
 #include "sim/join.hpp"
+#include "sim/pipeline_shell.hpp"
 
 namespace scw::sim {
 
@@ -26,9 +24,8 @@ class DisparityModel {
   JoinOutputs<out_type> eval(bool a_valid, const a_type& a, bool b_valid, const b_type& b,
                              bool out_ready) {
     JoinOutputs<out_type> o;
-    o.out_valid = slots_[kLatency - 1].has_value();
-    if (o.out_valid) o.out = *slots_[kLatency - 1];
-    advance_ = !o.out_valid || out_ready;
+    slots_.present(o);
+    advance_ = slots_.enable(out_ready);
     take_ = k_.in_ready(a_valid, b_valid);
     o.a_ready = take_;
     o.b_ready = take_;
@@ -38,17 +35,14 @@ class DisparityModel {
   }
   void tick() {
     const auto e = k_.clock(take_, a_, b_, advance_);
-    if (!advance_) return;
-    for (int i = kLatency - 1; i > 0; --i) slots_[i] = slots_[i - 1];
-    slots_[0].reset();
-    if (e.valid) slots_[0] = e.beat;
+    if (advance_) slots_.advance(e.valid, [&e] { return e.beat; });
   }
 
   Kernel& kernel() { return k_; }
 
  private:
   Kernel k_;
-  std::array<std::optional<out_type>, kLatency> slots_{};
+  SlotRegister<out_type, kLatency> slots_;
   bool advance_ = false, take_ = false;
   a_type a_{};
   b_type b_{};

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "hls/pipeline/frame_check.hpp"
+#include "sim/pipeline_shell.hpp"
 #include "sim/side_component.hpp"
 
 namespace scw::sim {
@@ -32,12 +33,11 @@ class FrameCheckModel {
 
   FrameCheckOutputs<out_type> eval(bool in_valid, const in_type& in, bool out_ready,
                                    bool flag_ready) {
-    adv_ = !out_valid_ || out_ready;
+    adv_ = out_.enable(out_ready);
     const bool flag_free = !flag_valid_ || flag_ready;
     FrameCheckOutputs<out_type> o;
     o.in_ready = adv_ && (!k_.emits_flag(in) || flag_free);
-    o.out_valid = out_valid_;
-    if (out_valid_) o.out = out_;
+    out_.present(o);
     o.flag_valid = flag_valid_;
     if (flag_valid_) o.flag = flag_;
     take_ = in_valid && o.in_ready;
@@ -55,10 +55,7 @@ class FrameCheckModel {
         flag_valid_ = true;
       }
     }
-    if (adv_) {
-      out_valid_ = take_;
-      if (take_) out_ = in_;
-    }
+    if (adv_) out_.advance(take_, [this] { return in_; });
   }
 
   Kernel& kernel() { return k_; }
@@ -66,8 +63,7 @@ class FrameCheckModel {
 
  private:
   Kernel k_;
-  bool out_valid_ = false;
-  out_type out_{};
+  SlotRegister<out_type, 1> out_;  // the pixel path's one register
   bool flag_valid_ = false;
   hls::pipeline::FrameFlag flag_{};
   // The last eval's decisions, applied at the edge.

@@ -2,14 +2,11 @@
 // The Verilated scw_frame_check with the C++ model's interface, and its parameter check.
 #pragma once
 
-#include <memory>
 #include <string>
 
 #include "hls/pipeline/frame_check.hpp"
 #include "sim/frame_check_model.hpp"
-#include "sim/pack.hpp"
-#include "sim/rtl_stream.hpp"
-#include "sim/verilated_harness.hpp"
+#include "sim/rtl_adapter.hpp"
 
 namespace scw::sim {
 
@@ -25,7 +22,7 @@ constexpr bool frame_check_params_match() {
 /// A Verilated scw_frame_check built with `Params` (check with frame_check_params_match) as a
 /// cycle model of FrameCheckModel's shape, so a test or a SideComponent drives either.
 template <typename VM, typename Params>
-class FrameCheckRtl {
+class FrameCheckRtl : public RtlAdapter<VM> {
  public:
   using params = Params;
   using in_type = typename Params::beat_type;
@@ -33,38 +30,25 @@ class FrameCheckRtl {
   using flag_type = hls::pipeline::FrameFlagPacket;
   using side_type = hls::pipeline::FrameFlag;
 
-  /// Checks `cfg` as the model does (std::invalid_argument) and drives cfg_* before reset;
-  /// Verilator keeps input values, so they stay stable throughout.
+  /// Checks `cfg` as the model does (std::invalid_argument) and drives cfg_* before reset.
   FrameCheckRtl(const std::string& name, const hls::pipeline::FrameCheckConfig& cfg)
-      : h_(std::make_unique<Harness<VM>>(name)) {
-    hls::pipeline::check_frame_check_config<Params>(cfg);
-    VM& m = h_->dut();
-    m.cfg_width_i = static_cast<unsigned>(cfg.width);
-    m.cfg_height_i = static_cast<unsigned>(cfg.height);
-    h_->reset();
-  }
+      : RtlAdapter<VM>(name, [&cfg](VM& m) {
+          hls::pipeline::check_frame_check_config<Params>(cfg);
+          m.cfg_width_i = static_cast<unsigned>(cfg.width);
+          m.cfg_height_i = static_cast<unsigned>(cfg.height);
+        }) {}
 
   FrameCheckOutputs<out_type> eval(bool in_valid, const in_type& in, bool out_ready,
                                    bool flag_ready) {
-    VM& m = h_->dut();
+    VM& m = this->dut();
     drive_stage_in(m, in_valid, in, out_ready);
     m.flag_ready_i = flag_ready;
-    m.eval();
-    FrameCheckOutputs<out_type> o;
+    auto o = settle_out<FrameCheckOutputs<out_type>>(m);
     o.in_ready = m.in_ready_o != 0;
-    o.out_valid = m.out_valid_o != 0;
-    if (o.out_valid) o.out = read_stage_out<out_type>(m);
     o.flag_valid = m.flag_valid_o != 0;
     if (o.flag_valid) o.flag.error = m.flag_error_o != 0;
     return o;
   }
-  void tick() { h_->tick(); }
-
-  Harness<VM>& harness() { return *h_; }
-  VM& dut() { return h_->dut(); }
-
- private:
-  std::unique_ptr<Harness<VM>> h_;
 };
 
 }  // namespace scw::sim

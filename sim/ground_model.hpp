@@ -2,11 +2,9 @@
 // The ground-removal kernel clocked as its RTL: line buffer pipeline, then decision pipeline.
 #pragma once
 
-#include <array>
-#include <optional>
-
 #include "hls/ground/ground.hpp"
 #include "sim/cycle_model.hpp"
+#include "sim/pipeline_shell.hpp"
 
 namespace scw::sim {
 
@@ -31,10 +29,9 @@ class GroundModel {
 
   StreamOutputs<out_type> eval(bool in_valid, const in_type& in, bool out_ready) {
     StreamOutputs<out_type> o;
-    o.out_valid = dec_[kDecideLatency - 1].has_value();
-    if (o.out_valid) o.out = *dec_[kDecideLatency - 1];
-    dec_adv_ = !o.out_valid || out_ready;
-    line_adv_ = !line_[kLineLatency - 1].has_value() || dec_adv_;
+    dec_.present(o);
+    dec_adv_ = dec_.enable(out_ready);
+    line_adv_ = line_.enable(dec_adv_);
     o.in_ready = line_adv_;
     in_valid_ = in_valid;
     in_ = in;
@@ -43,16 +40,8 @@ class GroundModel {
   void tick() {
     // The decision takes the line buffer's last slot before the line buffer moves on (it moves
     // whenever the decision does).
-    if (dec_adv_) {
-      for (int i = kDecideLatency - 1; i > 0; --i) dec_[i] = dec_[i - 1];
-      dec_[0].reset();
-      if (line_[kLineLatency - 1]) dec_[0] = k_.decide(*line_[kLineLatency - 1]);
-    }
-    if (line_adv_) {
-      for (int i = kLineLatency - 1; i > 0; --i) line_[i] = line_[i - 1];
-      line_[0].reset();
-      if (in_valid_) line_[0] = k_.window(in_);
-    }
+    if (dec_adv_) dec_.advance(line_.out_valid(), [this] { return k_.decide(line_.out()); });
+    if (line_adv_) line_.advance(in_valid_, [this] { return k_.window(in_); });
   }
 
   Kernel& kernel() { return k_; }
@@ -60,8 +49,8 @@ class GroundModel {
 
  private:
   Kernel k_;
-  std::array<std::optional<column_type>, kLineLatency> line_{};
-  std::array<std::optional<out_type>, kDecideLatency> dec_{};
+  SlotRegister<column_type, kLineLatency> line_;
+  SlotRegister<out_type, kDecideLatency> dec_;
   bool line_adv_ = false, dec_adv_ = false, in_valid_ = false;
   in_type in_{};
 };

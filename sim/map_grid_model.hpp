@@ -3,16 +3,15 @@
 // a checked run for source-shaped models, and their simulator component.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <string>
 #include <utility>
 
 #include "hls/rectify/map_grid.hpp"
 #include "sim/components.hpp"
 #include "sim/cycle_model.hpp"
+#include "sim/pipeline_shell.hpp"
 #include "sim/stream_check.hpp"
 
 namespace scw::sim {
@@ -47,20 +46,16 @@ class MapGridModel {
 
   StreamOutputs<out_type> eval(bool run, bool out_ready) {
     StreamOutputs<out_type> o;
-    o.out_valid = slots_[kLatency - 1].has_value();
-    if (o.out_valid) o.out = *slots_[kLatency - 1];
-    advance_ = !o.out_valid || out_ready;
+    slots_.present(o);
+    advance_ = slots_.enable(out_ready);
     o.in_ready = advance_;
     issue_ = run && advance_;
     return o;
   }
   void drive_knot(const KnotWrite& w) { write_ = w; }
   void tick() {
-    if (advance_) {
-      for (int i = kLatency - 1; i > 0; --i) slots_[i] = slots_[i - 1];
-      slots_[0].reset();
-      if (issue_) slots_[0] = k_.step();  // reads the knots before this edge's write
-    }
+    // The step reads the knots before this edge's write.
+    if (advance_) slots_.advance(issue_, [this] { return k_.step(); });
     if (write_.we) k_.write_knot(write_.col, write_.row, write_.knot);
     write_ = KnotWrite{};
   }
@@ -70,7 +65,7 @@ class MapGridModel {
 
  private:
   Kernel k_;
-  std::array<std::optional<out_type>, kLatency> slots_{};
+  SlotRegister<out_type, kLatency> slots_;
   bool advance_ = false, issue_ = false;
   KnotWrite write_{};
 };

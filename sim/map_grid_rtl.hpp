@@ -4,14 +4,12 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <string>
 
 #include "hls/rectify/map_grid.hpp"
 #include "sim/map_grid_model.hpp"
 #include "sim/pack.hpp"
-#include "sim/rtl_stream.hpp"
-#include "sim/verilated_harness.hpp"
+#include "sim/rtl_adapter.hpp"
 
 namespace scw::sim {
 
@@ -33,45 +31,30 @@ void drive_knot_port(VM& m, const KnotWrite& w) {
 
 /// `VM` is a Verilated scw_rectify_map_grid built with `Params` (map_grid_params_match).
 template <typename VM, typename Params>
-class MapGridRtl {
+class MapGridRtl : public RtlAdapter<VM> {
  public:
   using out_type = typename Params::map_beat;
 
   MapGridRtl(const std::string& name, const hls::rectify::MapGridConfig& cfg)
-      : h_(std::make_unique<Harness<VM>>(name)), cfg_(cfg) {
-    drive_static();
-    h_->reset();
-  }
+      : RtlAdapter<VM>(name, [&cfg](VM& m) {
+          m.cfg_width_i = static_cast<unsigned>(cfg.width);
+          m.cfg_height_i = static_cast<unsigned>(cfg.height);
+        }) {}
 
   StreamOutputs<out_type> eval(bool run, bool out_ready) {
-    VM& m = h_->dut();
+    VM& m = this->dut();
     m.run_i = run;
     m.out_ready_i = out_ready;
-    m.eval();
-    StreamOutputs<out_type> o;
-    o.out_valid = m.out_valid_o;
-    o.out = read_stage_out<out_type>(m);
+    auto o = settle_out<StreamOutputs<out_type>>(m);
     o.in_ready = !o.out_valid || out_ready;  // the pipeline enable; a beat issues if run
     return o;
   }
-  void drive_knot(const KnotWrite& w) { drive_knot_port<Params>(h_->dut(), w); }
+  void drive_knot(const KnotWrite& w) { drive_knot_port<Params>(this->dut(), w); }
+  /// The write port is idle again after the edge (drive_knot drives one cycle).
   void tick() {
-    h_->tick();
-    h_->dut().knot_we_i = 0;
+    RtlAdapter<VM>::tick();
+    this->dut().knot_we_i = 0;
   }
-
-  Harness<VM>& harness() { return *h_; }
-  VM& dut() { return h_->dut(); }
-
- private:
-  void drive_static() {
-    VM& m = h_->dut();
-    m.cfg_width_i = static_cast<unsigned>(cfg_.width);
-    m.cfg_height_i = static_cast<unsigned>(cfg_.height);
-  }
-
-  std::unique_ptr<Harness<VM>> h_;
-  hls::rectify::MapGridConfig cfg_;
 };
 
 /// `VM` is a Verilated scw_rectify_map_grid module class; `Params` a MapGridParams.

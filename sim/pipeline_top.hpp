@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,7 +19,7 @@
 #include "sim/labelling_rtl.hpp"
 #include "sim/map_grid_rtl.hpp"
 #include "sim/road_rtl.hpp"
-#include "sim/verilated_harness.hpp"
+#include "sim/rtl_adapter.hpp"
 #include "sim/warning_rtl.hpp"
 
 namespace scw::sim {
@@ -47,36 +46,15 @@ struct TopRun {
 };
 
 template <typename VM, typename Build>
-class PipelineTop {
+class PipelineTop : private RtlAdapter<VM> {
  public:
   using raw_beat = typename Build::rectify::pixel_beat;
 
   /// Sets the cfg_* ports from `s` (checked as the chain checks it), resets, and loads both
   /// cameras' knots, left first, one per cycle. The top's FIFO depths are its parameters'.
-  explicit PipelineTop(const PipelineSetup& s) : h_(std::make_unique<Harness<VM>>("pipeline")) {
-    check_setup<Build>(s);
-    const PipelineDepths defaults;
-    if (s.depths.raw != defaults.raw || s.depths.map != defaults.map ||
-        s.depths.rect != defaults.rect || s.depths.disp != defaults.disp ||
-        s.depths.obj != defaults.obj || s.depths.res != defaults.res ||
-        s.depths.flag != defaults.flag)
-      throw std::invalid_argument("the Verilated scw_pipeline is built with the default depths");
-    VM& m = h_->dut();
-    const auto u = [](int v) { return static_cast<unsigned>(v < 0 ? 0 : v); };
-    m.cfg_lead_i = u(s.lead_rows);
-    const auto l = s.labelling_config();
-    hls::labelling::check_config<typename Build::labelling>(l);
-    hls::warning::check_config<typename Build::warning>(s.warning);
-    drive_disparity_cfg<VM, typename Build::disparity>(m, s.disparity_config());
-    drive_labelling_cfg(m, l);  // the top's width and height ports: the same frame
-    drive_warning_cfg(m, s.warning);
-    drive_road_config(m, s.road);
-    m.run_i = 0;
-    m.l_valid_i = 0;
-    m.r_valid_i = 0;
-    m.out_ready_i = 0;
-    m.obj_ready_i = 0;
-    h_->reset();
+  explicit PipelineTop(const PipelineSetup& s)
+      : RtlAdapter<VM>("pipeline", [&s](VM& m) { configure(m, s); }) {
+    VM& m = this->dut();
     load(false, s, s.left_knots);
     load(true, s, s.right_knots);
     m.knot_we_i = 0;
@@ -91,10 +69,8 @@ class PipelineTop {
     Driver dl(left, in), dr(right, in.other_stream(kRightInputSalt));
     StallGen sink(out, StallGen::Side::kOutput);
     StallGen table_sink(out.other_stream(kObjectTableSalt), StallGen::Side::kOutput);
-    VM& m = h_->dut();
+    VM& m = this->dut();
     TopRun r;
-    using L = BeatLayout<raw_beat>;
-    using R = BeatLayout<hls::pipeline::PipelineResultPacket>;
     using O = BeatLayout<hls::labelling::LabelPacket>;
     for (std::int64_t c = 0; r.results.size() < frames; ++c) {
       if (c >= max_cycles)
@@ -104,29 +80,22 @@ class PipelineTop {
       const bool lv = dl.offer(), rv = dr.offer();
       const bool out_ready = sink.next();
       const bool obj_ready = table_sink.next();
-      m.l_valid_i = lv;
-      L::payload(dl.beat()).to_port(m.l_data_i);
-      m.l_sof_i = dl.beat().sof;
-      m.l_eol_i = dl.beat().eol;
-      m.r_valid_i = rv;
-      L::payload(dr.beat()).to_port(m.r_data_i);
-      m.r_sof_i = dr.beat().sof;
-      m.r_eol_i = dr.beat().eol;
+      DisparityPorts::a::drive(m, lv, dl.beat());  // the top's l_*/r_* are the disparity's
+      DisparityPorts::b::drive(m, rv, dr.beat());
       m.out_ready_i = out_ready;
       m.obj_ready_i = obj_ready;
       m.eval();
       const bool l_take = lv && m.l_ready_o, r_take = rv && m.r_ready_o;
       if (l_take && dl.beat().sof) r.first_in_cycles.push_back(c);
       if (out_ready && m.out_valid_o) {
-        r.results.push_back(
-            R::from_payload(Bits::from_port(m.out_data_o, R::kPayloadBits), m.out_last_o));
+        r.results.push_back(read_stage_out<hls::pipeline::PipelineResultPacket>(m));
         r.result_cycles.push_back(c);
       }
       if (obj_ready && m.obj_valid_o) {
         r.object_table.push_back(
             O::from_payload(Bits::from_port(m.obj_data_o, O::kPayloadBits), m.obj_last_o));
       }
-      h_->tick();
+      this->tick();
       dl.taken(l_take);
       dr.taken(r_take);
       r.cycles = c + 1;
@@ -135,9 +104,34 @@ class PipelineTop {
   }
 
   /// The sticky error bits: {labelling, disparity, rectify right [2:0], rectify left [2:0]}.
-  unsigned errors() { return h_->dut().err_o; }
+  unsigned errors() { return this->dut().err_o; }
 
  private:
+  /// Checks `s` and drives the static inputs, every stream idle, before reset.
+  static void configure(VM& m, const PipelineSetup& s) {
+    check_setup<Build>(s);
+    const PipelineDepths defaults;
+    if (s.depths.raw != defaults.raw || s.depths.map != defaults.map ||
+        s.depths.rect != defaults.rect || s.depths.disp != defaults.disp ||
+        s.depths.obj != defaults.obj || s.depths.res != defaults.res ||
+        s.depths.flag != defaults.flag)
+      throw std::invalid_argument("the Verilated scw_pipeline is built with the default depths");
+    const auto u = [](int v) { return static_cast<unsigned>(v < 0 ? 0 : v); };
+    m.cfg_lead_i = u(s.lead_rows);
+    const auto l = s.labelling_config();
+    hls::labelling::check_config<typename Build::labelling>(l);
+    hls::warning::check_config<typename Build::warning>(s.warning);
+    drive_disparity_cfg<VM, typename Build::disparity>(m, s.disparity_config());
+    drive_labelling_cfg(m, l);  // the top's width and height ports: the same frame
+    drive_warning_cfg(m, s.warning);
+    drive_road_config(m, s.road);
+    m.run_i = 0;
+    m.l_valid_i = 0;
+    m.r_valid_i = 0;
+    m.out_ready_i = 0;
+    m.obj_ready_i = 0;
+  }
+
   /// Source's offer rule (sim/components.hpp): once offered, a beat is held until taken.
   struct Driver {
     Driver(const std::vector<raw_beat>& b, const StallPattern& p)
@@ -161,17 +155,15 @@ class PipelineTop {
   };
 
   void load(bool right, const PipelineSetup& s, const std::vector<hls::rectify::KnotPoint>& k) {
-    VM& m = h_->dut();
+    VM& m = this->dut();
     for (int j = 0; j < s.knot_rows; ++j)
       for (int i = 0; i < s.knot_cols; ++i) {
         drive_knot_port<typename Build::map_grid>(
             m, KnotWrite{true, i, j, k[static_cast<std::size_t>(j * s.knot_cols + i)]});
         m.knot_right_i = right;
-        h_->tick();
+        this->tick();
       }
   }
-
-  std::unique_ptr<Harness<VM>> h_;
 };
 
 }  // namespace scw::sim

@@ -2,11 +2,9 @@
 // The rectify kernel clocked as its RTL pipeline: a join model (raw pixels, map) -> pixels.
 #pragma once
 
-#include <array>
-#include <optional>
-
 #include "hls/rectify/rectify.hpp"
 #include "sim/join.hpp"
+#include "sim/pipeline_shell.hpp"
 
 namespace scw::sim {
 
@@ -28,10 +26,9 @@ class RectifyModel {
   JoinOutputs<out_type> eval(bool a_valid, const a_type& a, bool b_valid, const b_type& b,
                              bool out_ready) {
     JoinOutputs<out_type> o;
-    o.out_valid = slots_[kLatency - 1].has_value();
-    if (o.out_valid) o.out = *slots_[kLatency - 1];
-    advance_ = !o.out_valid || out_ready;
-    pending_ = slots_[0].has_value() && slots_[0]->eol;
+    slots_.present(o);
+    advance_ = slots_.enable(out_ready);
+    pending_ = slots_.first().has_value() && slots_.first()->eol;
     o.a_ready = k_.raw_ready(pending_);
     o.b_ready = k_.map_ready(advance_);
     a_take_ = a_valid && o.a_ready;
@@ -42,10 +39,7 @@ class RectifyModel {
   }
   void tick() {
     const auto e = k_.clock(pending_, a_take_, a_, advance_, b_take_, b_);
-    if (!advance_) return;
-    for (int i = kLatency - 1; i > 0; --i) slots_[i] = slots_[i - 1];
-    slots_[0].reset();
-    if (e.valid) slots_[0] = e.beat;
+    if (advance_) slots_.advance(e.valid, [&e] { return e.beat; });
   }
 
   Kernel& kernel() { return k_; }
@@ -53,7 +47,7 @@ class RectifyModel {
 
  private:
   Kernel k_;
-  std::array<std::optional<out_type>, kLatency> slots_{};
+  SlotRegister<out_type, kLatency> slots_;
   bool advance_ = false, pending_ = false, a_take_ = false, b_take_ = false;
   a_type a_{};
   b_type b_{};

@@ -3,15 +3,13 @@
 // Verilated scw_result_merge as a model of the C++ twin's shape, and their component.
 #pragma once
 
-#include <memory>
 #include <string>
 #include <utility>
 
 #include "hls/pipeline/pipeline_result.hpp"
 #include "sim/pipeline_pack.hpp"
-#include "sim/rtl_stream.hpp"
+#include "sim/rtl_adapter.hpp"
 #include "sim/simulator.hpp"
-#include "sim/verilated_harness.hpp"
 
 namespace scw::sim {
 
@@ -23,18 +21,16 @@ constexpr bool result_merge_params_match() {
 
 /// `VM` is a Verilated scw_result_merge; same eval/tick as hls::pipeline::ResultMerge.
 template <typename VM>
-class ResultMergeRtl {
+class ResultMergeRtl : public RtlAdapter<VM> {
  public:
   using Outputs = hls::pipeline::ResultMerge::Outputs;
 
-  explicit ResultMergeRtl(const std::string& name) : h_(std::make_unique<Harness<VM>>(name)) {
-    h_->reset();
-  }
+  explicit ResultMergeRtl(const std::string& name) : RtlAdapter<VM>(name) {}
 
   Outputs eval(bool res_valid, const hls::warning::ResultPacket& res, bool left_valid,
                const hls::pipeline::FlagPacket& left, bool right_valid,
                const hls::pipeline::FlagPacket& right, bool out_ready) {
-    VM& m = h_->dut();
+    VM& m = this->dut();
     m.res_valid_i = res_valid;
     BeatLayout<hls::warning::ResultPacket>::payload(res).to_port(m.res_data_i);
     m.res_last_i = res.last;
@@ -43,17 +39,10 @@ class ResultMergeRtl {
     m.right_valid_i = right_valid;
     m.right_error_i = right.data.error;
     m.out_ready_i = out_ready;
-    m.eval();
-    Outputs o;
+    auto o = settle_out<Outputs>(m);
     o.in_ready = m.res_ready_o;
-    o.out_valid = m.out_valid_o;
-    o.out = read_stage_out<hls::pipeline::PipelineResultPacket>(m);
     return o;
   }
-  void tick() { h_->tick(); }
-
- private:
-  std::unique_ptr<Harness<VM>> h_;
 };
 
 /// Puts a merge model between the result FIFO, the two flag FIFOs and the output FIFO.

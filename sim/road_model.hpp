@@ -3,11 +3,9 @@
 // frames that holds the next sof, and the line each frame is gated with on a side output.
 #pragma once
 
-#include <array>
-#include <optional>
-
 #include "hls/road/road.hpp"
 #include "sim/cycle_model.hpp"
+#include "sim/pipeline_shell.hpp"
 #include "sim/side_component.hpp"
 
 namespace scw::sim {
@@ -38,11 +36,10 @@ class RoadModel {
   SideOutputs<out_type, side_type> eval(bool in_valid, const in_type& in, bool out_ready,
                                         bool line_ready) {
     SideOutputs<out_type, side_type> o;
-    o.out_valid = slots_[kLatency - 1].has_value();
-    if (o.out_valid) o.out = *slots_[kLatency - 1];
+    slots_.present(o);
     o.flag_valid = line_valid_;
     if (line_valid_) o.flag = line_;
-    adv_ = !o.out_valid || out_ready;
+    adv_ = slots_.enable(out_ready);
     start_fit_ = busy_ == 0 && in_valid && k_.needs_fit(in);
     o.in_ready = adv_ && busy_ == 0 && !start_fit_ && (!in.sof || !line_valid_ || line_ready);
     take_ = in_valid && o.in_ready;
@@ -70,10 +67,7 @@ class RoadModel {
     } else if (start_fit_) {
       busy_ = kFitClocks;
     }
-    if (!adv_) return;
-    for (int i = kLatency - 1; i > 0; --i) slots_[i] = slots_[i - 1];
-    slots_[0].reset();
-    if (take_) slots_[0] = k_.step(in_);
+    if (adv_) slots_.advance(take_, [this] { return k_.step(in_); });
   }
 
   Kernel& kernel() { return k_; }
@@ -81,7 +75,7 @@ class RoadModel {
 
  private:
   Kernel k_;
-  std::array<std::optional<out_type>, kLatency> slots_{};
+  SlotRegister<out_type, kLatency> slots_;
   int busy_ = 0;
   bool adv_ = false, start_fit_ = false, take_ = false, line_ready_ = false;
   bool line_valid_ = false;

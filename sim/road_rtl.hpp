@@ -3,7 +3,7 @@
 // the compile-time check that it was built with the C++ parameters.
 #pragma once
 
-#include <memory>
+#include <cstdint>
 #include <string>
 
 #include "hls/road/road.hpp"
@@ -58,7 +58,7 @@ RoadRtl<VM, Params> make_road_rtl(const std::string& name, const hls::road::Road
 
 /// A Verilated scw_road with its line output, RoadModel's four-argument shape (SideComponent).
 template <typename VM, typename Params>
-class RoadSideRtl {
+class RoadSideRtl : public RtlAdapter<VM> {
  public:
   using in_type = typename Params::in_beat;
   using out_type = typename Params::out_beat;
@@ -66,22 +66,18 @@ class RoadSideRtl {
 
   /// Checks `cfg` as the model does (std::invalid_argument) and drives cfg_* before reset.
   RoadSideRtl(const std::string& name, const hls::road::RoadConfig& cfg)
-      : h_(std::make_unique<Harness<VM>>(name)) {
-    hls::road::check_config(cfg);
-    drive_road_config(h_->dut(), cfg);
-    h_->reset();
-  }
+      : RtlAdapter<VM>(name, [&cfg](VM& m) {
+          hls::road::check_config(cfg);
+          drive_road_config(m, cfg);
+        }) {}
 
   SideOutputs<out_type, side_type> eval(bool in_valid, const in_type& in, bool out_ready,
                                         bool line_ready) {
-    VM& m = h_->dut();
+    VM& m = this->dut();
     drive_stage_in(m, in_valid, in, out_ready);
     m.line_ready_i = line_ready;
-    m.eval();
-    SideOutputs<out_type, side_type> o;
+    auto o = settle_out<SideOutputs<out_type, side_type>>(m);
     o.in_ready = m.in_ready_o != 0;
-    o.out_valid = m.out_valid_o != 0;
-    if (o.out_valid) o.out = read_stage_out<out_type>(m);
     o.flag_valid = m.line_valid_o != 0;
     if (o.flag_valid) {
       o.flag.a = static_cast<std::int32_t>(m.line_a_o);
@@ -89,13 +85,6 @@ class RoadSideRtl {
     }
     return o;
   }
-  void tick() { h_->tick(); }
-
-  Harness<VM>& harness() { return *h_; }
-  VM& dut() { return h_->dut(); }
-
- private:
-  std::unique_ptr<Harness<VM>> h_;
 };
 
 }  // namespace scw::sim

@@ -1,17 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// The Verilated scw_warning as a stream model (object words in, frame results out), and the
-// compile-time check that it was built with the C++ parameters.
+// The Verilated scw_warning as a stream model (object words in, frame results out) or a join
+// with its road input, and the compile-time check that it was built with the C++ parameters.
 #pragma once
 
-#include <memory>
+#include <cstdint>
 #include <string>
 
 #include "hls/warning/warning.hpp"
-#include "sim/cycle_model.hpp"
-#include "sim/join.hpp"
 #include "sim/labelling_pack.hpp"
+#include "sim/rtl_join.hpp"
 #include "sim/rtl_stream.hpp"
-#include "sim/verilated_harness.hpp"
 #include "sim/warning_pack.hpp"
 
 namespace scw::sim {
@@ -46,92 +44,50 @@ void drive_warning_cfg(VM& m, const hls::warning::WarningConfig& cfg) {
   m.cfg_spread_i = cfg.spread_q4;
 }
 
-/// A Verilated scw_warning as a cycle model. RtlStream carries a packet's `last` inside *_data
-/// for the opaque elastic blocks; this stage has a separate in_last_i/out_last_o beside its
-/// payload ports (the labelling stage's output shape), and a road input. WarningRtl is the
-/// one-input shape (sim::WarningModel's: the road port idle), WarningRoadRtl the join
-/// (sim::WarningRoadModel's).
-template <typename VM>
-class WarningRtlBase {
- public:
-  using out_type = hls::warning::ResultPacket;
-
-  /// Checks nothing: use make_warning_rtl, which checks `cfg` as the model does.
-  WarningRtlBase(const std::string& name, const hls::warning::WarningConfig& cfg)
-      : h_(std::make_unique<Harness<VM>>(name)) {
-    // Static inputs, set once before reset; Verilator keeps input values, so they stay stable.
-    drive_warning_cfg(h_->dut(), cfg);
-    h_->dut().cfg_road_height_i = cfg.road_height;
-    h_->reset();
-  }
-
-  void tick() { h_->tick(); }
-  Harness<VM>& harness() { return *h_; }
-  VM& dut() { return h_->dut(); }
-
- protected:
-  /// Drives every input, settles, and returns the RTL's view.
-  JoinOutputs<out_type> settle(bool in_valid, const hls::labelling::LabelPacket& in,
-                               bool road_valid, const hls::warning::RoadLine& road,
-                               bool out_ready) {
-    VM& m = h_->dut();
-    m.in_valid_i = in_valid;
-    m.out_ready_i = out_ready;
-    BeatLayout<hls::labelling::LabelPacket>::payload(in).to_port(m.in_data_i);
-    m.in_last_i = in.last;
-    m.road_valid_i = road_valid;
-    m.road_a_i = static_cast<std::uint32_t>(road.a) & 0x3ffffu;
-    m.road_b_i = static_cast<std::uint32_t>(road.b);
-    m.eval();
-    JoinOutputs<out_type> o;
-    o.a_ready = m.in_ready_o;
-    o.b_ready = m.road_ready_o;
-    o.out_valid = m.out_valid_o;
-    o.out = read_stage_out<out_type>(m);
-    return o;
-  }
-
- private:
-  std::unique_ptr<Harness<VM>> h_;
+/// The ports of scw_warning as a join: `a` the object words (in_*, with in_last_i), `b` the road
+/// line (road_valid_i/road_ready_o and the line's two words, one a frame).
+struct WarningPorts {
+  SCW_IN_PORTS(a, in);
+  struct b {
+    template <typename VM>
+    static void drive(VM& m, bool valid, const hls::Packet<hls::warning::RoadLine>& line) {
+      m.road_valid_i = valid;
+      m.road_a_i = static_cast<std::uint32_t>(line.data.a) & 0x3ffffu;
+      m.road_b_i = static_cast<std::uint32_t>(line.data.b);
+    }
+    template <typename VM>
+    static bool ready(const VM& m) {
+      return m.road_ready_o;
+    }
+  };
 };
 
+/// A Verilated scw_warning as a one-input stream model (sim::WarningModel's shape): the road
+/// port idle, as configure_warning_rtl leaves it.
 template <typename VM>
-class WarningRtl : public WarningRtlBase<VM> {
- public:
-  using in_type = hls::labelling::LabelPacket;
-  using out_type = hls::warning::ResultPacket;
-  using WarningRtlBase<VM>::WarningRtlBase;
+using WarningRtl = RtlStream<VM, hls::labelling::LabelPacket, hls::warning::ResultPacket>;
 
-  StreamOutputs<out_type> eval(bool in_valid, const in_type& in, bool out_ready) {
-    const auto j = this->settle(in_valid, in, false, {}, out_ready);
-    StreamOutputs<out_type> o;
-    o.in_ready = j.a_ready;
-    o.out_valid = j.out_valid;
-    o.out = j.out;
-    return o;
-  }
-};
-
+/// A Verilated scw_warning with its road input, as a join model (sim::WarningRoadModel's).
 template <typename VM>
-class WarningRoadRtl : public WarningRtlBase<VM> {
- public:
-  using a_type = hls::labelling::LabelPacket;
-  using b_type = hls::Packet<hls::warning::RoadLine>;
-  using out_type = hls::warning::ResultPacket;
-  using WarningRtlBase<VM>::WarningRtlBase;
+using WarningRoadRtl = RtlJoin<VM, hls::labelling::LabelPacket,
+                               hls::Packet<hls::warning::RoadLine>, hls::warning::ResultPacket,
+                               WarningPorts>;
 
-  JoinOutputs<out_type> eval(bool a_valid, const a_type& a, bool b_valid, const b_type& b,
-                             bool out_ready) {
-    return this->settle(a_valid, a, b_valid, b.data, out_ready);
-  }
-};
+/// The static inputs of both shapes: the cfg_* ports, and the road port idle with a zero line
+/// (the join drives it every cycle; the stream shape never does).
+template <typename VM>
+void configure_warning_rtl(VM& m, const hls::warning::WarningConfig& cfg) {
+  drive_warning_cfg(m, cfg);
+  m.cfg_road_height_i = cfg.road_height;
+  WarningPorts::b::drive(m, false, {});
+}
 
 /// Checks `cfg` as the model does (std::invalid_argument) and drives the cfg_* ports from it
 /// before reset. `VM` is a Verilated scw_warning built with `Params` (warning_params_match).
 template <typename VM, typename Params>
 WarningRtl<VM> make_warning_rtl(const std::string& name, const hls::warning::WarningConfig& cfg) {
   hls::warning::check_config<Params>(cfg);
-  return WarningRtl<VM>(name, cfg);
+  return WarningRtl<VM>(name, [cfg](VM& m) { configure_warning_rtl(m, cfg); });
 }
 
 /// The same for the join shape, with a road line a frame (cfg.road_height).
@@ -139,7 +95,7 @@ template <typename VM, typename Params>
 WarningRoadRtl<VM> make_warning_road_rtl(const std::string& name,
                                          const hls::warning::WarningConfig& cfg) {
   hls::warning::check_config<Params>(cfg);
-  return WarningRoadRtl<VM>(name, cfg);
+  return WarningRoadRtl<VM>(name, [cfg](VM& m) { configure_warning_rtl(m, cfg); });
 }
 
 }  // namespace scw::sim
