@@ -27,20 +27,20 @@
 #include <string>
 #include <vector>
 
-#include "Vbench_disparity_p1.h"
-#include "Vbench_disparity_p1_scw_disparity.h"
-#include "Vbench_disparity_p2.h"
-#include "Vbench_disparity_p2_scw_disparity.h"
 #include "bench/disparity_bench_configs.hpp"
 #include "hls/disparity/disparity.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/io/image_file.hpp"
 #include "host/pipeline/thesis_figures.hpp"
 #include "host/reference/disparity_ref.hpp"
-#include "sim/disparity_model.hpp"
-#include "sim/disparity_rtl.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/rtl_params.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/models/disparity_model.hpp"
+#include "sim/rtl/disparity_rtl.hpp"
+#include "sim/rtl/rtl_params.hpp"
+#include "Vbench_disparity_p1.h"
+#include "Vbench_disparity_p1_scw_disparity.h"
+#include "Vbench_disparity_p2.h"
+#include "Vbench_disparity_p2_scw_disparity.h"
 
 namespace {
 

@@ -19,15 +19,15 @@
 #include <string>
 #include <vector>
 
-#include "Vbench_labelling.h"
-#include "Vbench_labelling_scw_labelling.h"
 #include "bench/labelling_bench_configs.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/labelling/second_pass.hpp"
 #include "host/reference/labelling_ref.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/labelling_model.hpp"
-#include "sim/labelling_rtl.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/models/labelling_model.hpp"
+#include "sim/rtl/labelling_rtl.hpp"
+#include "Vbench_labelling.h"
+#include "Vbench_labelling_scw_labelling.h"
 
 namespace {
 

@@ -28,24 +28,24 @@
 #include <string>
 #include <vector>
 
+#include "bench/rectify_bench_configs.hpp"
+#include "host/pipeline/thesis_figures.hpp"
+#include "host/rectify/fixed_map.hpp"
+#include "host/rectify/test_maps.hpp"
+#include "host/reference/rectify_ref.hpp"
+#include "sim/core/components.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/core/join.hpp"
+#include "sim/core/simulator.hpp"
+#include "sim/models/rectify_model.hpp"
+#include "sim/rtl/rectify_rtl.hpp"
+#include "sim/rtl/rtl_params.hpp"
 #include "Vbench_rectify_p1.h"
 #include "Vbench_rectify_p1_scw_rectify.h"
 #include "Vbench_rectify_p2.h"
 #include "Vbench_rectify_p2_scw_rectify.h"
 #include "Vbench_rectify_p4.h"
 #include "Vbench_rectify_p4_scw_rectify.h"
-#include "bench/rectify_bench_configs.hpp"
-#include "host/pipeline/thesis_figures.hpp"
-#include "host/rectify/fixed_map.hpp"
-#include "host/reference/rectify_ref.hpp"
-#include "sim/components.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/join.hpp"
-#include "sim/rectify_model.hpp"
-#include "sim/rectify_rtl.hpp"
-#include "sim/rtl_params.hpp"
-#include "sim/simulator.hpp"
-#include "host/rectify/test_maps.hpp"
 
 namespace {
 

@@ -9,14 +9,14 @@
 #include <random>
 #include <vector>
 
+#include "host/reference/disparity_ref.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/core/join.hpp"
+#include "sim/models/disparity_model.hpp"
+#include "sim/rtl/disparity_rtl.hpp"
+#include "sim/rtl/rtl_params.hpp"
 #include "Vdownstream_disparity.h"
 #include "Vdownstream_disparity_scw_disparity.h"
-#include "host/reference/disparity_ref.hpp"
-#include "sim/disparity_model.hpp"
-#include "sim/disparity_rtl.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/join.hpp"
-#include "sim/rtl_params.hpp"
 
 namespace {
 

@@ -90,7 +90,7 @@ struct FrameOutput {
   cv::Mat overlay;                    // BGR, Fig. 5.11 b
 };
 
-/// What another engine's stages (the Verilated pipeline, sim/pipeline_chain.hpp) made of one
+/// What another engine's stages (the Verilated pipeline, sim/pipeline/pipeline_chain.hpp) made of one
 /// pair: the rectified pair, the disparity map, the object table and the frame result.
 struct StageOutputs {
   cv::Mat left, right;  // rectified grey

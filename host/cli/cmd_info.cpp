@@ -5,7 +5,7 @@
 #include <opencv2/core/version.hpp>
 
 #include "host/cli/commands.hpp"
-#include "sim/stall.hpp"
+#include "sim/core/stall.hpp"
 
 namespace scw::cli {
 

@@ -7,17 +7,17 @@
 #include <memory>
 #include <string>
 
+#include "hls/common/line_buffer.hpp"
+#include "host/cli/commands.hpp"
+#include "host/pipeline/stream_line_buffer.hpp"
+#include "host/pipeline/thesis_figures.hpp"
+#include "sim/rtl/rtl_params.hpp"
 #include "Vcli_line_buffer_p1.h"
 #include "Vcli_line_buffer_p1_scw_line_buffer.h"
 #include "Vcli_line_buffer_p2.h"
 #include "Vcli_line_buffer_p2_scw_line_buffer.h"
 #include "Vcli_line_buffer_p4.h"
 #include "Vcli_line_buffer_p4_scw_line_buffer.h"
-#include "hls/common/line_buffer.hpp"
-#include "host/cli/commands.hpp"
-#include "host/pipeline/stream_line_buffer.hpp"
-#include "host/pipeline/thesis_figures.hpp"
-#include "sim/rtl_params.hpp"
 
 namespace scw::cli {
 namespace {

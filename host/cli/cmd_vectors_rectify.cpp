@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "Vcli_rectify_p2.h"
-#include "Vcli_rectify_p2_scw_rectify.h"
 #include "host/cli/commands.hpp"
 #include "host/vectors/rectify_set.hpp"
-#include "sim/join.hpp"
-#include "sim/rectify_rtl.hpp"
-#include "sim/rtl_params.hpp"
+#include "sim/core/join.hpp"
+#include "sim/rtl/rectify_rtl.hpp"
+#include "sim/rtl/rtl_params.hpp"
+#include "Vcli_rectify_p2.h"
+#include "Vcli_rectify_p2_scw_rectify.h"
 
 namespace scw::cli {
 namespace {

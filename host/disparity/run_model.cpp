@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "sim/frame_beats.hpp"
+#include "sim/core/frame_beats.hpp"
 
 namespace scw::disparity {
 

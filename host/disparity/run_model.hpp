@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "hls/disparity/disparity_params.hpp"
-#include "sim/disparity_model.hpp"
+#include "sim/models/disparity_model.hpp"
 
 namespace scw::disparity {
 

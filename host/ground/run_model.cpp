@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/frame_beats.hpp"
-#include "sim/ground_model.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/models/ground_model.hpp"
 
 namespace scw::ground {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "hls/labelling/labelling.hpp"
 #include "host/labelling/second_pass.hpp"
-#include "sim/labelling_model.hpp"
+#include "sim/models/labelling_model.hpp"
 
 namespace scw::labelling {
 namespace {

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "host/pipeline/setup.hpp"
+#include "host/rectify/fixed_map.hpp"
 #include "host/reference/ground_ref.hpp"
 #include "host/road/run_model.hpp"
-#include "host/rectify/fixed_map.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
-#include "sim/pipeline_chain.hpp"
+#include "sim/pipeline/pipeline_chain.hpp"
 #if SCW_THESIS_RTL
 #include "sim/builds/pipeline_thesis_rtl.hpp"
 #endif

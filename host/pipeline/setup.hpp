@@ -12,8 +12,8 @@
 #include "host/rectify/map_grid.hpp"
 #include "host/road/setup.hpp"
 #include "host/warning/setup.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/pipeline_setup.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/pipeline/pipeline_setup.hpp"
 
 namespace scw::host::pipeline {
 

@@ -19,7 +19,7 @@
 #include "host/pipeline/thesis_figures.hpp"
 #include "host/warning/reference.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
-#include "sim/pipeline_chain.hpp"
+#include "sim/pipeline/pipeline_chain.hpp"
 #if SCW_THESIS_RTL
 #include "sim/builds/pipeline_thesis_rtl.hpp"
 #endif

@@ -15,8 +15,8 @@
 #include "hls/pipeline/pipeline_result.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/synth/builds.hpp"
-#include "sim/pipeline_timing.hpp"
-#include "sim/simulator.hpp"
+#include "sim/core/simulator.hpp"
+#include "sim/pipeline/pipeline_timing.hpp"
 
 namespace scw::host::pipeline {
 

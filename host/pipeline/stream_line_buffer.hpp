@@ -16,10 +16,10 @@
 #include "hls/common/line_buffer.hpp"
 #include "host/pipeline/stream_run.hpp"
 #include "host/reference/line_buffer_ref.hpp"
-#include "sim/components.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/pipeline_shell.hpp"
-#include "sim/rtl_stream.hpp"
+#include "sim/core/components.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/models/pipeline_shell.hpp"
+#include "sim/rtl/rtl_stream.hpp"
 
 namespace scw::host::pipeline {
 

@@ -10,7 +10,7 @@
 #include "host/io/image_file.hpp"
 #include "host/pipeline/thesis_figures.hpp"
 #include "host/vectors/line_buffer_set.hpp"
-#include "sim/stall.hpp"
+#include "sim/core/stall.hpp"
 
 namespace scw::host::pipeline {
 

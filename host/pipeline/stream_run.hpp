@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
-#include "sim/pack.hpp"
-#include "sim/simulator.hpp"
+#include "sim/core/simulator.hpp"
+#include "sim/words/pack.hpp"
 
 namespace scw::host::pipeline {
 

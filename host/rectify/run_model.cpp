@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim/frame_beats.hpp"
-#include "sim/rectify_model.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/models/rectify_model.hpp"
 
 namespace scw::rectify {
 

@@ -11,8 +11,8 @@
 #include "host/io/image_file.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "host/vectors/vector_set.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/pack.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/words/pack.hpp"
 
 namespace scw::vectors {
 namespace {

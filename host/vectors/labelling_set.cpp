@@ -18,12 +18,12 @@
 #include "host/reference/labelling_ref.hpp"
 #include "host/vectors/labelling_maps.hpp"
 #include "host/vectors/vector_set.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/labelling_model.hpp"
-#include "sim/labelling_pack.hpp"
-#include "sim/pack.hpp"
-#include "sim/stall.hpp"
-#include "sim/stream_check.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/core/stall.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/labelling_model.hpp"
+#include "sim/words/labelling_pack.hpp"
+#include "sim/words/pack.hpp"
 
 namespace scw::vectors {
 namespace {

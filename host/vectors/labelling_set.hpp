@@ -66,7 +66,7 @@ struct LabellingSetSummary {
 /// check fails.
 LabellingSetSummary write_labelling_set(const LabellingPreset& p, const std::filesystem::path& dir);
 
-/// The layout of the labelling stage's output word (sim/labelling_pack.hpp) for add_hex(): the
+/// The layout of the labelling stage's output word (sim/words/labelling_pack.hpp) for add_hex(): the
 /// generic {last, data}, plus the two shapes of data, told apart by bit 0. The warning stage's
 /// input is the same word.
 nlohmann::json labelling_word_layout();

@@ -8,7 +8,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "sim/pack.hpp"
+#include "sim/words/pack.hpp"
 
 namespace scw::vectors {
 

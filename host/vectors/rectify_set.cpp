@@ -16,10 +16,10 @@
 #include "host/rectify/test_maps.hpp"
 #include "host/reference/rectify_ref.hpp"
 #include "host/vectors/vector_set.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/join.hpp"
-#include "sim/pack.hpp"
-#include "sim/rectify_model.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/core/join.hpp"
+#include "sim/models/rectify_model.hpp"
+#include "sim/words/pack.hpp"
 
 namespace scw::vectors {
 namespace {

@@ -13,8 +13,8 @@
 
 #include "hls/rectify/rectify_params.hpp"
 #include "host/rectify/fixed_map.hpp"
-#include "sim/stall.hpp"
-#include "sim/stream_check.hpp"
+#include "sim/core/stall.hpp"
+#include "sim/core/stream_check.hpp"
 
 namespace scw::vectors {
 

@@ -13,11 +13,11 @@
 #include "host/reference/road_ref.hpp"
 #include "host/vectors/road_maps.hpp"
 #include "host/vectors/vector_set.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/pack.hpp"
-#include "sim/road_model.hpp"
-#include "sim/stall.hpp"
-#include "sim/stream_check.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/core/stall.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/road_model.hpp"
+#include "sim/words/pack.hpp"
 
 namespace scw::vectors {
 namespace {

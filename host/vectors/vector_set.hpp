@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/bits.hpp"
+#include "sim/words/bits.hpp"
 
 namespace scw::vectors {
 

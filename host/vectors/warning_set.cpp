@@ -13,12 +13,12 @@
 #include "hls/warning/warning.hpp"
 #include "host/vectors/labelling_set.hpp"
 #include "host/vectors/vector_set.hpp"
-#include "sim/labelling_pack.hpp"
-#include "sim/pack.hpp"
-#include "sim/stall.hpp"
-#include "sim/stream_check.hpp"
-#include "sim/warning_model.hpp"
-#include "sim/warning_pack.hpp"
+#include "sim/core/stall.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/warning_model.hpp"
+#include "sim/words/labelling_pack.hpp"
+#include "sim/words/pack.hpp"
+#include "sim/words/warning_pack.hpp"
 // The object placement and random tables the [hls] and [rtl] tests use: the vectors exercise
 // the same branches, and a plain fold of evaluate() checks every frame independently of the
 // clocked kernel.

@@ -3,6 +3,9 @@
 // against hls::pipeline::SmallPipeline<P>, bundled for PipelineChain and PipelineTop.
 #pragma once
 
+#include "hls/pipeline/pipeline_params.hpp"
+#include "sim/pipeline/pipeline_chain.hpp"
+#include "sim/pipeline/pipeline_top.hpp"
 #include "Vpipe_ground.h"
 #include "Vpipe_ground_scw_ground.h"
 #include "Vpipe_merge.h"
@@ -30,9 +33,6 @@
 #include "Vpipe_p2_top_scw_pipeline.h"
 #include "Vpipe_warning.h"
 #include "Vpipe_warning_scw_warning.h"
-#include "hls/pipeline/pipeline_params.hpp"
-#include "sim/pipeline_chain.hpp"
-#include "sim/pipeline_top.hpp"
 
 namespace scw::sim::small_build {
 

@@ -6,14 +6,14 @@
 
 #include <type_traits>
 
+#include "hls/pipeline/pipeline_params.hpp"
+#include "sim/pipeline/pipeline_chain.hpp"
 #include "Vthesis_ground.h"
 #include "Vthesis_ground_scw_ground.h"
 #include "Vthesis_merge.h"
 #include "Vthesis_merge_scw_result_merge.h"
 #include "Vthesis_warning.h"
 #include "Vthesis_warning_scw_warning.h"
-#include "hls/pipeline/pipeline_params.hpp"
-#include "sim/pipeline_chain.hpp"
 // One beat width's blocks: Vthesis_p<P>_{check, grid, rectify, disparity, labelling}.
 #include "Vthesis_p1_check.h"
 #include "Vthesis_p1_check_scw_frame_check.h"

@@ -8,8 +8,8 @@
 
 #include "hls/common/beat.hpp"
 #include "hls/common/line_buffer.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/pack.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/words/pack.hpp"
 
 namespace scw::test {
 

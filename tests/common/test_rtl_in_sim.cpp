@@ -3,15 +3,15 @@
 // gives the same beats at the same cycles.
 #include <catch2/catch.hpp>
 
+#include "host/reference/line_buffer_ref.hpp"
+#include "sim/core/components.hpp"
+#include "sim/core/elastic.hpp"
+#include "sim/models/pipeline_shell.hpp"
+#include "sim/rtl/rtl_stream.hpp"
+#include "tests/common/primitive_configs.hpp"
 #include "Vline_buffer_p2.h"
 #include "Vskid_buf.h"
 #include "Vskid_buf_scw_skid_buf.h"
-#include "host/reference/line_buffer_ref.hpp"
-#include "sim/components.hpp"
-#include "sim/elastic.hpp"
-#include "sim/pipeline_shell.hpp"
-#include "sim/rtl_stream.hpp"
-#include "tests/common/primitive_configs.hpp"
 
 namespace {
 

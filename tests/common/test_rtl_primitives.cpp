@@ -7,16 +7,24 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "host/reference/line_buffer_ref.hpp"
+#include "sim/core/elastic.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/pipeline_shell.hpp"
+#include "sim/rtl/rtl_params.hpp"
+#include "sim/rtl/rtl_stream.hpp"
+#include "tests/common/primitive_configs.hpp"
+#include "tests/common/twin_check.hpp"
 #include "Vfifo_d1.h"
 #include "Vfifo_d1_scw_fifo.h"
-#include "Vfifo_d2.h"
-#include "Vfifo_d2_scw_fifo.h"
-#include "Vfifo_d5.h"
-#include "Vfifo_d5_scw_fifo.h"
 #include "Vfifo_d1r.h"
 #include "Vfifo_d1r_scw_fifo.h"
+#include "Vfifo_d2.h"
+#include "Vfifo_d2_scw_fifo.h"
 #include "Vfifo_d2r.h"
 #include "Vfifo_d2r_scw_fifo.h"
+#include "Vfifo_d5.h"
+#include "Vfifo_d5_scw_fifo.h"
 #include "Vfifo_d5r.h"
 #include "Vfifo_d5r_scw_fifo.h"
 #include "Vline_buffer_p1.h"
@@ -29,14 +37,6 @@
 #include "Vskid_buf_scw_skid_buf.h"
 #include "Vstream_reg.h"
 #include "Vstream_reg_scw_stream_reg.h"
-#include "host/reference/line_buffer_ref.hpp"
-#include "sim/elastic.hpp"
-#include "sim/pipeline_shell.hpp"
-#include "sim/rtl_params.hpp"
-#include "sim/rtl_stream.hpp"
-#include "sim/stream_check.hpp"
-#include "tests/common/primitive_configs.hpp"
-#include "tests/common/twin_check.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "sim/stream_check.hpp"
+#include "sim/core/stream_check.hpp"
 
 namespace scw::test {
 

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "sim/frame_beats.hpp"
+#include "sim/core/frame_beats.hpp"
 
 namespace scw::test {
 

@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "hls/disparity/decide_latency.hpp"
+#include "hls/disparity/disparity.hpp"
+#include "sim/rtl/verilated_harness.hpp"
 #include "Vdecide_n45.h"
 #include "Vdecide_n45_scw_disparity_decide.h"
 #include "Vdecide_n8.h"
 #include "Vdecide_n8_scw_disparity_decide.h"
-#include "hls/disparity/decide_latency.hpp"
-#include "hls/disparity/disparity.hpp"
-#include "sim/verilated_harness.hpp"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "host/reference/disparity_ref.hpp"
-#include "sim/disparity_model.hpp"
-#include "sim/frame_beats.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/models/disparity_model.hpp"
 #include "tests/disparity/disparity_frames.hpp"
 
 namespace {

@@ -10,17 +10,17 @@
 #include <utility>
 #include <vector>
 
+#include "hls/disparity/disparity_params.hpp"
+#include "hls/disparity/prefilter.hpp"
+#include "host/reference/disparity_ref.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/rtl/verilated_harness.hpp"
 #include "Vprefilter_p1.h"
 #include "Vprefilter_p1_scw_disparity_prefilter.h"
 #include "Vprefilter_p2.h"
 #include "Vprefilter_p2_scw_disparity_prefilter.h"
 #include "Vprefilter_p4.h"
 #include "Vprefilter_p4_scw_disparity_prefilter.h"
-#include "hls/disparity/disparity_params.hpp"
-#include "hls/disparity/prefilter.hpp"
-#include "host/reference/disparity_ref.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/verilated_harness.hpp"
 
 namespace {
 

@@ -3,19 +3,19 @@
 // pattern, both against the direct reference; malformed streams flagged and recovered from.
 #include <catch2/catch.hpp>
 
+#include "host/reference/disparity_ref.hpp"
+#include "sim/models/disparity_model.hpp"
+#include "sim/rtl/disparity_rtl.hpp"
+#include "sim/rtl/rtl_params.hpp"
+#include "tests/common/twin_check.hpp"
+#include "tests/disparity/disparity_configs.hpp"
+#include "tests/disparity/disparity_frames.hpp"
 #include "Vdisparity_p1.h"
 #include "Vdisparity_p1_scw_disparity.h"
 #include "Vdisparity_p2.h"
 #include "Vdisparity_p2_scw_disparity.h"
 #include "Vdisparity_p4.h"
 #include "Vdisparity_p4_scw_disparity.h"
-#include "host/reference/disparity_ref.hpp"
-#include "sim/disparity_model.hpp"
-#include "sim/disparity_rtl.hpp"
-#include "sim/rtl_params.hpp"
-#include "tests/common/twin_check.hpp"
-#include "tests/disparity/disparity_configs.hpp"
-#include "tests/disparity/disparity_frames.hpp"
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 #include "hls/ground/ground_params.hpp"
 #include "host/reference/ground_ref.hpp"
-#include "sim/frame_beats.hpp"
+#include "sim/core/frame_beats.hpp"
 
 namespace scw::test::ground {
 

@@ -16,8 +16,8 @@
 #include "host/ground/run_model.hpp"
 #include "host/io/image_file.hpp"
 #include "host/reference/ground_ref.hpp"
-#include "sim/ground_model.hpp"
-#include "sim/stream_check.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/ground_model.hpp"
 #include "tests/ground/ground_maps.hpp"
 
 namespace {

@@ -7,20 +7,20 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
+#include "host/disparity/run_model.hpp"
+#include "host/io/image_file.hpp"
+#include "sim/models/ground_model.hpp"
+#include "sim/models/pipeline_shell.hpp"
+#include "sim/rtl/ground_rtl.hpp"
+#include "sim/rtl/rtl_stream.hpp"
+#include "tests/common/twin_check.hpp"
+#include "tests/ground/ground_maps.hpp"
 #include "Vground_lb.h"
 #include "Vground_lb_scw_line_buffer.h"
 #include "Vground_w20.h"
 #include "Vground_w20_scw_ground.h"
 #include "Vground_w32.h"
 #include "Vground_w32_scw_ground.h"
-#include "host/disparity/run_model.hpp"
-#include "host/io/image_file.hpp"
-#include "sim/ground_model.hpp"
-#include "sim/ground_rtl.hpp"
-#include "sim/pipeline_shell.hpp"
-#include "sim/rtl_stream.hpp"
-#include "tests/common/twin_check.hpp"
-#include "tests/ground/ground_maps.hpp"
 
 namespace {
 

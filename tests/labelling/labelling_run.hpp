@@ -13,10 +13,10 @@
 #include "host/labelling/second_pass.hpp"
 #include "host/reference/labelling_ref.hpp"
 #include "host/vectors/labelling_maps.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/labelling_model.hpp"
-#include "sim/labelling_pack.hpp"
-#include "sim/stream_check.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/labelling_model.hpp"
+#include "sim/words/labelling_pack.hpp"
 
 namespace scw::test {
 

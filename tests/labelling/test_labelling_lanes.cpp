@@ -12,7 +12,7 @@
 #include "host/disparity/run_model.hpp"
 #include "host/io/image_file.hpp"
 #include "host/labelling/run_model.hpp"
-#include "sim/labelling_model.hpp"
+#include "sim/models/labelling_model.hpp"
 #include "tests/labelling/labelling_run.hpp"
 
 namespace {

@@ -9,6 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "host/labelling/run_model.hpp"
+#include "sim/models/labelling_model.hpp"
+#include "sim/rtl/labelling_rtl.hpp"
+#include "tests/common/twin_check.hpp"
+#include "tests/labelling/labelling_run.hpp"
 #include "Vlabelling_a.h"
 #include "Vlabelling_a_scw_labelling.h"
 #include "Vlabelling_b.h"
@@ -19,11 +24,6 @@
 #include "Vlabelling_l2_scw_labelling.h"
 #include "Vlabelling_l4.h"
 #include "Vlabelling_l4_scw_labelling.h"
-#include "host/labelling/run_model.hpp"
-#include "sim/labelling_model.hpp"
-#include "sim/labelling_rtl.hpp"
-#include "tests/common/twin_check.hpp"
-#include "tests/labelling/labelling_run.hpp"
 
 namespace {
 

@@ -15,19 +15,19 @@
 #include <utility>
 #include <vector>
 
+#include "sim/core/components.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/core/side_component.hpp"
+#include "sim/core/simulator.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/frame_check_model.hpp"
+#include "sim/rtl/frame_check_rtl.hpp"
+#include "sim/rtl/rtl_params.hpp"
+#include "tests/pipeline/frame_check_configs.hpp"
 #include "Vframe_check_p1.h"
 #include "Vframe_check_p1_scw_frame_check.h"
 #include "Vframe_check_p2.h"
 #include "Vframe_check_p2_scw_frame_check.h"
-#include "sim/components.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/side_component.hpp"
-#include "sim/frame_check_model.hpp"
-#include "sim/frame_check_rtl.hpp"
-#include "sim/rtl_params.hpp"
-#include "sim/simulator.hpp"
-#include "sim/stream_check.hpp"
-#include "tests/pipeline/frame_check_configs.hpp"
 
 namespace {
 

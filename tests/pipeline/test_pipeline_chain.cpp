@@ -12,7 +12,6 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "sim/builds/pipeline_small_rtl.hpp"
 #include "hls/pipeline/pipeline_params.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/io/image_file.hpp"
@@ -20,8 +19,9 @@
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
 #include "host/road/run_model.hpp"
-#include "sim/pipeline_chain.hpp"
-#include "sim/pipeline_top.hpp"
+#include "sim/builds/pipeline_small_rtl.hpp"
+#include "sim/pipeline/pipeline_chain.hpp"
+#include "sim/pipeline/pipeline_top.hpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include "hls/pipeline/pipeline_top.hpp"
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
-#include "sim/pipeline_chain.hpp"
+#include "sim/pipeline/pipeline_chain.hpp"
 
 namespace {
 

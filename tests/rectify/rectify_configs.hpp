@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "hls/rectify/rectify_params.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/rectify_model.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/models/rectify_model.hpp"
 
 namespace scw::test {
 

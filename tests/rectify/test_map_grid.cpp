@@ -12,26 +12,26 @@
 #include <type_traits>
 #include <vector>
 
-#include "Vmap_grid_p1.h"
-#include "Vmap_grid_p1_scw_rectify_map_grid.h"
-#include "Vmap_grid_p2.h"
-#include "Vmap_grid_p2_scw_rectify_map_grid.h"
-#include "Vmap_grid_p4.h"
-#include "Vmap_grid_p4_scw_rectify_map_grid.h"
 #include "hls/rectify/map_grid.hpp"
 #include "host/rectify/calibration.hpp"
 #include "host/rectify/fixed_map.hpp"
 #include "host/rectify/map_grid.hpp"
 #include "host/rectify/run_model.hpp"
 #include "host/reference/rectify_ref.hpp"
-#include "sim/components.hpp"
-#include "sim/join.hpp"
-#include "sim/map_grid_model.hpp"
-#include "sim/map_grid_rtl.hpp"
-#include "sim/rectify_model.hpp"
+#include "sim/core/components.hpp"
+#include "sim/core/join.hpp"
+#include "sim/models/map_grid_model.hpp"
+#include "sim/models/rectify_model.hpp"
+#include "sim/rtl/map_grid_rtl.hpp"
 #include "tests/common/primitive_configs.hpp"
 #include "tests/common/twin_check.hpp"
 #include "tests/rectify/random_maps.hpp"
+#include "Vmap_grid_p1.h"
+#include "Vmap_grid_p1_scw_rectify_map_grid.h"
+#include "Vmap_grid_p2.h"
+#include "Vmap_grid_p2_scw_rectify_map_grid.h"
+#include "Vmap_grid_p4.h"
+#include "Vmap_grid_p4_scw_rectify_map_grid.h"
 
 namespace {
 

@@ -3,20 +3,20 @@
 // pattern, both against the integer reference; malformed streams flagged and recovered from.
 #include <catch2/catch.hpp>
 
+#include "host/reference/rectify_ref.hpp"
+#include "sim/models/rectify_model.hpp"
+#include "sim/rtl/rectify_rtl.hpp"
+#include "sim/rtl/rtl_params.hpp"
+#include "tests/common/primitive_configs.hpp"
+#include "tests/common/twin_check.hpp"
+#include "tests/rectify/random_maps.hpp"
+#include "tests/rectify/rectify_configs.hpp"
 #include "Vrectify_p1.h"
 #include "Vrectify_p1_scw_rectify.h"
 #include "Vrectify_p2.h"
 #include "Vrectify_p2_scw_rectify.h"
 #include "Vrectify_p4.h"
 #include "Vrectify_p4_scw_rectify.h"
-#include "host/reference/rectify_ref.hpp"
-#include "sim/rectify_model.hpp"
-#include "sim/rectify_rtl.hpp"
-#include "sim/rtl_params.hpp"
-#include "tests/common/primitive_configs.hpp"
-#include "tests/common/twin_check.hpp"
-#include "tests/rectify/random_maps.hpp"
-#include "tests/rectify/rectify_configs.hpp"
 
 namespace {
 

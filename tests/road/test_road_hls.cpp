@@ -13,9 +13,9 @@
 #include "host/reference/road_ref.hpp"
 #include "host/road/run_model.hpp"
 #include "host/road/setup.hpp"
-#include "sim/road_model.hpp"
-#include "sim/stream_check.hpp"
 #include "host/vectors/road_maps.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/road_model.hpp"
 
 namespace {
 

@@ -14,6 +14,16 @@
 
 #include <opencv2/core.hpp>
 
+#include "hls/road/road.hpp"
+#include "host/vectors/road_maps.hpp"
+#include "sim/core/components.hpp"
+#include "sim/core/frame_beats.hpp"
+#include "sim/core/side_component.hpp"
+#include "sim/core/simulator.hpp"
+#include "sim/models/road_model.hpp"
+#include "sim/rtl/road_rtl.hpp"
+#include "sim/rtl/verilated_harness.hpp"
+#include "tests/common/twin_check.hpp"
 #include "Vroad_fit.h"
 #include "Vroad_fit_scw_road_fit.h"
 #include "Vroad_p1.h"
@@ -22,16 +32,6 @@
 #include "Vroad_p2_scw_road.h"
 #include "Vroad_p4.h"
 #include "Vroad_p4_scw_road.h"
-#include "hls/road/road.hpp"
-#include "host/vectors/road_maps.hpp"
-#include "sim/frame_beats.hpp"
-#include "sim/road_model.hpp"
-#include "sim/components.hpp"
-#include "sim/road_rtl.hpp"
-#include "sim/side_component.hpp"
-#include "sim/simulator.hpp"
-#include "sim/verilated_harness.hpp"
-#include "tests/common/twin_check.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 // deadlocks, and the simulator names that FIFO; deep enough, the same graph completes.
 #include <catch2/catch.hpp>
 
-#include "sim/components.hpp"
+#include "sim/core/components.hpp"
 
 namespace {
 

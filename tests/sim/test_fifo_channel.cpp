@@ -2,7 +2,7 @@
 // sim::Fifo: registered flags, bounds, occupancy and per-frame stamps.
 #include <catch2/catch.hpp>
 
-#include "sim/channel.hpp"
+#include "sim/core/channel.hpp"
 
 using scw::hls::Beat;
 using scw::hls::Packet;

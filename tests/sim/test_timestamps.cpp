@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include "hls/common/line_buffer.hpp"
-#include "sim/components.hpp"
-#include "sim/pipeline_shell.hpp"
+#include "sim/core/components.hpp"
+#include "sim/models/pipeline_shell.hpp"
 #include "tests/common/primitive_configs.hpp"
 
 namespace {

@@ -7,12 +7,12 @@
 #include <vector>
 
 #include "hls/warning/warning.hpp"
+#include "host/vectors/warning_tables.hpp"
 #include "host/warning/run_model.hpp"
 #include "host/warning/setup.hpp"
-#include "sim/stall.hpp"
-#include "sim/stream_check.hpp"
-#include "sim/warning_model.hpp"
-#include "host/vectors/warning_tables.hpp"
+#include "sim/core/stall.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/warning_model.hpp"
 
 namespace {
 

@@ -15,6 +15,18 @@
 #include <string>
 #include <vector>
 
+#include "hls/warning/warning.hpp"
+#include "hls/warning/warning_params.hpp"
+#include "host/reference/road_ref.hpp"
+#include "host/vectors/warning_tables.hpp"
+#include "host/warning/reference.hpp"
+#include "host/warning/run_model.hpp"
+#include "host/warning/setup.hpp"
+#include "sim/core/join.hpp"
+#include "sim/core/stream_check.hpp"
+#include "sim/models/warning_model.hpp"
+#include "sim/rtl/warning_rtl.hpp"
+#include "tests/common/twin_check.hpp"
 #include "Vwarning_a.h"
 #include "Vwarning_a_scw_warning.h"
 #include "Vwarning_b.h"
@@ -23,18 +35,6 @@
 #include "Vwarning_rule_scw_warning_rule.h"
 #include "Vwarning_sqrt.h"
 #include "Vwarning_sqrt_scw_warning_sqrt.h"
-#include "hls/warning/warning_params.hpp"
-#include "host/reference/road_ref.hpp"
-#include "host/warning/reference.hpp"
-#include "host/warning/run_model.hpp"
-#include "hls/warning/warning.hpp"
-#include "host/warning/setup.hpp"
-#include "sim/join.hpp"
-#include "sim/stream_check.hpp"
-#include "sim/warning_model.hpp"
-#include "sim/warning_rtl.hpp"
-#include "host/vectors/warning_tables.hpp"
-#include "tests/common/twin_check.hpp"
 
 namespace {
 
@@ -928,7 +928,7 @@ TEST_CASE("scw_warning_sqrt equals isqrt_round at every rounding boundary", "[wa
         FAIL_CHECK("n = " << n << ": RTL " << m->root_o << ", isqrt_round " << hw::isqrt_round(n));
     }
   }
-  Verilated::threadContextp(&ctx);  // see sim/verilated_harness.hpp
+  Verilated::threadContextp(&ctx);  // see sim/rtl/verilated_harness.hpp
   m->final();
   m.reset();
   CHECK(checked >= ns.size());
@@ -1092,7 +1092,7 @@ TEST_CASE("scw_warning_rule equals rule_disparity bit for bit", "[warning][rtl]"
       }
     }
   }
-  Verilated::threadContextp(&ctx);  // see sim/verilated_harness.hpp
+  Verilated::threadContextp(&ctx);  // see sim/rtl/verilated_harness.hpp
   m->final();
   m.reset();
   CHECK(checked >= rules.size() * 4000);  // held outputs are checked again

@@ -20,7 +20,7 @@ module tb_labelling_replay #(
   parameter int unsigned WordsOut      = 12,
   parameter int unsigned Frames        = 1
 );
-  localparam int unsigned OutW  = scw_pkg::ObjWordBits;  // sim/labelling_pack.hpp: 897
+  localparam int unsigned OutW  = scw_pkg::ObjWordBits;  // sim/words/labelling_pack.hpp: 897
   localparam int unsigned Nodes = MaxTilesX * MaxTilesY * LabelsPerTile;
   // Generous: the stage takes about one beat a clock, then sweeps its used nodes twice a frame;
   // the source idles 1 clock in 4 and the sink 3 in 7.

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: Apache-2.0
+// The clock: steps C++ models and Verilated RTL alike, connected by bounded FIFOs, and reports
+// FIFO occupancy, per-frame stage timestamps and deadlocks by name.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sim/core/channel.hpp"
+
+namespace scw::sim {
+
+/// Anything the clock steps. `eval()` looks at its input FIFOs' heads and its output FIFOs'
+/// space and requests pops and pushes; `tick()` is its own clock edge. FIFOs commit after every
+/// component has ticked, so evaluation order never matters.
+class Component {
+ public:
+  explicit Component(std::string name) : name_(std::move(name)) {}
+  virtual ~Component() = default;
+  Component(const Component&) = delete;
+  Component& operator=(const Component&) = delete;
+
+  const std::string& name() const { return name_; }
+  virtual void eval() = 0;
+  virtual void tick() = 0;
+
+  const std::vector<ChannelBase*>& inputs() const { return inputs_; }
+  const std::vector<ChannelBase*>& outputs() const { return outputs_; }
+
+ protected:
+  void connect_in(ChannelBase& c) {
+    c.consumer = name_;
+    inputs_.push_back(&c);
+  }
+  void connect_out(ChannelBase& c) {
+    c.producer = name_;
+    outputs_.push_back(&c);
+  }
+
+ private:
+  std::string name_;
+  std::vector<ChannelBase*> inputs_;
+  std::vector<ChannelBase*> outputs_;
+};
+
+/// Thrown when no beat has moved on any FIFO for the deadlock window. `stuck()` names the
+/// FIFOs that hold the pipeline: the full ones (their producers wait), or if none is full, the
+/// non-empty ones.
+class DeadlockError : public std::runtime_error {
+ public:
+  DeadlockError(const std::string& report, std::vector<std::string> stuck)
+      : std::runtime_error(report), stuck_(std::move(stuck)) {}
+  const std::vector<std::string>& stuck() const { return stuck_; }
+
+ private:
+  std::vector<std::string> stuck_;
+};
+
+/// Per frame at one stage boundary: first and last beat in (accepted from the input FIFOs)
+/// and out (pushed to the output FIFOs); -1 = not seen.
+struct StageFrame {
+  std::int64_t first_in = -1;
+  std::int64_t last_in = -1;
+  std::int64_t first_out = -1;
+  std::int64_t last_out = -1;
+};
+
+struct StageReport {
+  std::string name;
+  std::vector<StageFrame> frames;
+};
+
+struct FifoReport {
+  std::string name;
+  std::string producer;
+  std::string consumer;
+  int depth = 0;
+  int max_occupancy = 0;
+  std::uint64_t beats = 0;
+};
+
+struct SimReport {
+  std::int64_t cycles = 0;
+  std::vector<FifoReport> fifos;
+  std::vector<StageReport> stages;
+  /// Human-readable tables (FIFOs, then per-frame stage timestamps).
+  std::string text() const;
+};
+
+class Simulator {
+ public:
+  /// A new bounded FIFO owned by the simulator.
+  template <typename T>
+  Fifo<T>& fifo(std::string name, int depth) {
+    auto f = std::make_unique<Fifo<T>>(std::move(name), depth);
+    Fifo<T>& ref = *f;
+    channels_.push_back(std::move(f));
+    return ref;
+  }
+  /// A new component owned by the simulator; constructor arguments are forwarded.
+  template <typename C, typename... Args>
+  C& add(Args&&... args) {
+    auto c = std::make_unique<C>(std::forward<Args>(args)...);
+    C& ref = *c;
+    components_.push_back(std::move(c));
+    return ref;
+  }
+
+  /// One clock cycle: every component evaluates, every component ticks, every FIFO commits.
+  void step();
+  /// Steps until `done()` holds. Throws DeadlockError when no FIFO moves for the deadlock
+  /// window, std::runtime_error after `max_cycles`.
+  void run_until(const std::function<bool()>& done, std::int64_t max_cycles);
+
+  std::int64_t cycle() const { return cycle_; }
+  /// Cycles without any FIFO transfer after which the run counts as deadlocked. Set it above
+  /// the longest internal latency of any component (default 65,536).
+  void set_deadlock_window(std::int64_t cycles) { deadlock_window_ = cycles; }
+
+  SimReport report() const;
+  /// The text of a deadlock report for the current state.
+  std::string deadlock_report(std::vector<std::string>* stuck = nullptr) const;
+
+ private:
+  std::vector<std::unique_ptr<ChannelBase>> channels_;
+  std::vector<std::unique_ptr<Component>> components_;
+  std::int64_t cycle_ = 0;
+  std::int64_t quiet_ = 0;
+  std::int64_t deadlock_window_ = 65536;
+};
+
+}  // namespace scw::sim
