@@ -12,6 +12,9 @@
 # between this call and the C++ fails the build rather than the test. NO_TRACE leaves out the
 # FST tracing code (the largest generated files): for whole-pipeline builds whose compile time
 # matters more than waveforms (sim::Harness then ignores SCW_FST_DIR for them).
+# Unreset registers and explicit Xs are Verilated as `unique`: 0 unless the run sets
+# SCW_VERILATOR_SEED (sim/rtl/verilated_harness.hpp), then random from that seed, so every test can
+# be rerun with them randomised without another build (docs/rtl.md, "X and reset").
 # The installed package (scwConfig.cmake) points it at the installed RTL first.
 if(NOT SCW_RTL_DIR)
   set(SCW_RTL_DIR "${CMAKE_CURRENT_LIST_DIR}/../rtl_models")
@@ -40,12 +43,14 @@ function(scw_verilate target)
   if(ARG_NO_TRACE)
     set(trace "")
   endif()
+  # Marks a target that holds Verilated models, for scw_discover_tests' X-randomised run.
+  set_property(TARGET ${target} PROPERTY SCW_VERILATED ON)
   verilate(${target}
     TOP_MODULE ${ARG_TOP}
     PREFIX ${ARG_PREFIX}
     SOURCES ${sources}
     ${trace}
-    VERILATOR_ARGS ${gargs} -O3 -Wno-fatal --x-assign fast --x-initial fast)
+    VERILATOR_ARGS ${gargs} -O3 -Wno-fatal --x-assign unique --x-initial unique)
 endfunction()
 
 # scw_rtl_model_library(<name>): a static library to scw_verilate() models into. Its Verilator

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The whole pipeline's built parameters: one bundle per build, the one source of truth that the
-// C++ chain (sim/pipeline_chain.hpp), the Verilated top (scw_pipeline) and `scw synth` share.
+// C++ chain (sim/pipeline/pipeline_chain.hpp), the Verilated top (scw_pipeline) and `scw synth` share.
 #pragma once
 
 #include "hls/disparity/disparity_params.hpp"

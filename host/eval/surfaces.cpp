@@ -27,7 +27,7 @@ std::optional<SceneView> load_scene_view(const fs::path& dir) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, or a number too large
     throw std::runtime_error("'" + scene.string() + "' is not JSON (" + e.what() + ")");
   }
   if (!j.is_object() || !j.contains("preset") || !j["preset"].is_string()) return std::nullopt;

@@ -393,7 +393,7 @@ Manifest parse_manifest(const fs::path& dir) {
   json j;
   try {
     j = json::parse(read_bytes(path, where));
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large
     bad_manifest(where, std::string("not valid JSON (") + e.what() + ")");
   }
   if (!j.is_object()) bad_manifest(where, "the top level must be a JSON object");

@@ -12,14 +12,14 @@ package scw_pkg;
   // = 0 or negative (hls::disparity::disp_t).
   localparam int unsigned DispBits /*verilator public*/ = 16;
   // The words between the stages, as sim/ packs them (the one list of their widths in RTL):
-  // the labelling stage's object word, {is_status, label_desc_t} (sim/labelling_pack.hpp, 897),
-  // the warning stage's frame result (sim/warning_pack.hpp, 199) and the top's result word, the
-  // frame result and both cameras' input flags (sim/pipeline_pack.hpp). Verilator exports them
+  // the labelling stage's object word, {is_status, label_desc_t} (sim/words/labelling_pack.hpp, 897),
+  // the warning stage's frame result (sim/words/warning_pack.hpp, 199) and the top's result word, the
+  // frame result and both cameras' input flags (sim/words/pipeline_pack.hpp). Verilator exports them
   // (V<prefix>_scw_pkg), and sim/builds/pipeline_small_rtl.hpp checks them against the C++ packs.
   localparam int unsigned ObjWordBits    /*verilator public*/ = 1 + 32 + 10 * 16 + 11 * 64;
   localparam int unsigned ResultWordBits /*verilator public*/ = 2 + 5 + 3 * 16 + 32 + 7 * 16;
   localparam int unsigned PipeResultBits /*verilator public*/ = ResultWordBits + 2;
-  // One labelling object descriptor: the object word of sim/labelling_pack.hpp without its
+  // One labelling object descriptor: the object word of sim/words/labelling_pack.hpp without its
   // is_status bit, declared most significant first (area is bits [31:0], sum_dd the top 64 bits).
   typedef struct packed {
     logic [63:0] sum_dd;

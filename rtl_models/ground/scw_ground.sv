@@ -49,7 +49,7 @@ module scw_ground #(
   output logic             err_o
 );
   // Shared with C++ (hls::ground::GroundParams, kDecideLatency) and checked at compile time by
-  // sim/ground_rtl.hpp.
+  // sim/rtl/ground_rtl.hpp.
   /* verilator lint_off UNUSEDPARAM */
   localparam int unsigned Rows          /*verilator public*/ = 11;
   localparam int unsigned LineLatency   /*verilator public*/ = 3;  // scw_line_buffer's Latency

@@ -1013,7 +1013,7 @@ module scw_labelling #(
     out_desc.sum_dd    = 64'(acc_rd[at +: SumDDW]);
   end
 
-  // The output register: an object's sum, or the status word (sim/labelling_pack.hpp).
+  // The output register: an object's sum, or the status word (sim/words/labelling_pack.hpp).
   always_comb begin
     out_valid_d = out_valid_q && !out_ready_i;
     out_load    = emit_object || emit_status;

@@ -53,7 +53,7 @@ module scw_frame_check #(
   output logic               flag_error_o
 );
   // Shared with C++ (hls::pipeline::FrameCheckParams::kLatency), checked at compile time by
-  // sim/frame_check_rtl.hpp.
+  // sim/rtl/frame_check_rtl.hpp.
   /* verilator lint_off UNUSEDPARAM */
   localparam int unsigned Latency /*verilator public*/ = 1;
   /* verilator lint_on UNUSEDPARAM */

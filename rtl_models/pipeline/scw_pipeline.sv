@@ -11,7 +11,7 @@
 //                  |flag                fork -> FIFO -> scw_warning -> FIFO -> scw_result_merge
 //                  |                                                              |
 //                  +----------------------------------------------------> FIFO -> out
-// The C++ chain sim/pipeline_chain.hpp builds the same graph from the stages' models (or their
+// The C++ chain sim/pipeline/pipeline_chain.hpp builds the same graph from the stages' models (or their
 // Verilated twins) and sim::Fifo, the twin of scw_fifo, so the two agree clock for clock
 // (tests/pipeline). Parameters: hls::pipeline::PipelineParams, the one list of built sizes.
 // The labelling stage takes Ppc pixels per beat, one lane per pixel (scw_labelling "Lanes").

@@ -4,7 +4,7 @@
 
 // raw in -> FIFO -> scw_frame_check -> FIFO -> scw_rectify -> FIFO -> out
 //                        |  flag -> FIFO -> flag out          ^ map: scw_rectify_map_grid -> FIFO
-// Every link is an scw_fifo, as in the C++ chain (sim/pipeline_chain.hpp), so the two count the
+// Every link is an scw_fifo, as in the C++ chain (sim/pipeline/pipeline_chain.hpp), so the two count the
 // same cycles. The knot RAM is written through knot_* while run_i is low.
 module scw_pipeline_camera #(
   parameter int unsigned Ppc            = 1,

@@ -3,7 +3,7 @@
 `default_nettype none
 
 // The rule and its arithmetic are in docs/road.md. The C++ twin is scw::hls::road::Road
-// (hls/road/road.hpp) clocked by scw::sim::RoadModel (sim/road_model.hpp), clock for clock: the
+// (hls/road/road.hpp) clocked by scw::sim::RoadModel (sim/models/road_model.hpp), clock for clock: the
 // same in_ready, out_valid and out data every cycle.
 //
 // Structure:
@@ -70,7 +70,7 @@ module scw_road #(
   output logic [31:0]      line_b_o       // signed
 );
   // Shared with C++ (hls::road::kLatency, kFitClocks, kFracBits), checked at compile time by
-  // sim/road_rtl.hpp.
+  // sim/rtl/road_rtl.hpp.
   /* verilator lint_off UNUSEDPARAM */
   localparam int unsigned Latency   /*verilator public*/ = 2;
   localparam int unsigned FitClocks /*verilator public*/ = 256;

@@ -25,7 +25,7 @@
 //   in_ready = en && (!first || road_valid), road_ready = en && first && in_valid;
 // the line travels with the frame's words through the rule's delay to scw_warning_object, which
 // measures the top's height above it. Without it the road port is never read.
-// Output word: sim/warning_pack.hpp. Input word: sim/labelling_pack.hpp (label_desc_t above
+// Output word: sim/words/warning_pack.hpp. Input word: sim/words/labelling_pack.hpp (label_desc_t above
 // the is_status bit; a status word's objects and flags sit where area and x_min are).
 // cfg_* are static: registered without reset, so set them at least a clock before the first
 // word (the C++ adapter sets them before reset).

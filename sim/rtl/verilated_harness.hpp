@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -24,6 +25,27 @@ struct has_trace<VM, std::void_t<decltype(std::declval<VM&>().trace(
                          static_cast<VerilatedFstC*>(nullptr), 0))>> : std::true_type {};
 }  // namespace detail
 
+/// With SCW_VERILATOR_SEED=N (N >= 1) in the environment, every register and memory a model
+/// does not reset starts at a random value drawn from seed N, and every explicit X the RTL assigns
+/// is a random constant (the models are Verilated with --x-initial unique --x-assign unique;
+/// Verilator 5.006's +verilator+rand+reset+2 and +verilator+seed+N). Verilator is a 2-state
+/// simulator: without this those values read 0, and a design that depends on one passes here and
+/// misbehaves on the board. Unset or 0, they are 0 as before. Set before the model is built:
+/// its constructor draws the initial values.
+inline void randomise_unreset_state(VerilatedContext& ctx) {
+  const char* seed = std::getenv("SCW_VERILATOR_SEED");
+  if (seed == nullptr || *seed == '\0') return;
+  char* end = nullptr;
+  const long n = std::strtol(seed, &end, 10);
+  if (*end != '\0' || n < 0 || n > 0x7fffffff)
+    throw std::invalid_argument(std::string("SCW_VERILATOR_SEED='") + seed +
+                                "' is not a seed: give a whole number from 1 (0 or unset: no "
+                                "randomisation)");
+  if (n == 0) return;
+  ctx.randReset(2);
+  ctx.randSeed(static_cast<int>(n));
+}
+
 /// Owns a VerilatedContext and one model `VM` with ports `clk_i` and `rst_ni`.
 /// Set the environment variable SCW_FST_DIR to a folder and every harness writes
 /// `<folder>/<name>.fst` (open it with GTKWave); unset, nothing is traced and nothing is paid.
@@ -34,6 +56,7 @@ class Harness {
     const char* dir = std::getenv("SCW_FST_DIR");
     const bool tracing = kTraced && dir != nullptr && *dir != '\0';
     if (tracing) ctx_->traceEverOn(true);
+    randomise_unreset_state(*ctx_);
     dut_ = std::make_unique<VM>(ctx_.get(), name.c_str());
     if constexpr (kTraced) {
       if (tracing) {

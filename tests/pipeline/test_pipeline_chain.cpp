@@ -271,8 +271,12 @@ TEST_CASE("20 frames under random input gaps and output backpressure: same resul
   SECTION("P = 2: the labelling stage's two lanes") { check_stalls<2>(); }
 }
 
+// [unwritten-ram]: left out of the X-randomised run (docs/rtl.md, "X and reset"). A frame cut
+// short right after reset makes the rectifier emit rows from raw-row RAM this frame never wrote:
+// the C++ model reads 0s there, the RTL whatever the RAM held, so the flagged frame's objects
+// (and their timing) differ under random RAM contents; the frame after it is exact either way.
 TEST_CASE("broken input frames are flagged in their result, the next frame is right",
-          "[pipeline][rtl]") {
+          "[pipeline][rtl][unwritten-ram]") {
   constexpr int P = 1;
   using B = scw::hls::Beat<std::uint8_t, P>;
   const int w = 48, h = 24;
@@ -399,3 +403,4 @@ TEST_CASE("a setup no stage can take is refused with the reason", "[pipeline]") 
   CHECK_THROWS_WITH(Chain<2>(small_setup(64, 32, false), PipelineEngines::all(Engine::rtl), {}, {}),
                     Catch::Contains("frame check RTL is not built"));
 }
+
