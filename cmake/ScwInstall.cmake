@@ -49,7 +49,17 @@ foreach(entry IN LISTS SCW_RTL_TOPS)
   endif()
   list(JOIN files "\n" text)
   file(WRITE ${PROJECT_BINARY_DIR}/rtl_models/${top}.f "${text}\n")
-  install(FILES ${PROJECT_BINARY_DIR}/rtl_models/${top}.f
+  # The same list as a FuseSoC core (CAPI2), for flows that take cores: `fusesoc run --target
+  # lint scw:rtl:<top>` once the installed folder is a FuseSoC library.
+  list(JOIN files "\n      - " core_files)
+  file(WRITE ${PROJECT_BINARY_DIR}/rtl_models/${top}.core
+       "CAPI=2:\nname: scw:rtl:${top}:${PROJECT_VERSION}\n"
+       "description: ${top} from scw, synthesizable SystemVerilog (docs/install.md)\n"
+       "filesets:\n  rtl:\n    file_type: systemVerilogSource\n    files:\n      - ${core_files}\n"
+       "targets:\n  default:\n    filesets: [rtl]\n    toplevel: ${top}\n"
+       "  lint:\n    default_tool: verilator\n    filesets: [rtl]\n    toplevel: ${top}\n"
+       "    tools:\n      verilator:\n        mode: lint-only\n")
+  install(FILES ${PROJECT_BINARY_DIR}/rtl_models/${top}.f ${PROJECT_BINARY_DIR}/rtl_models/${top}.core
           DESTINATION ${CMAKE_INSTALL_DATADIR}/scw/rtl_models)
 endforeach()
 install(DIRECTORY ${_rtl}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/scw/rtl_models
