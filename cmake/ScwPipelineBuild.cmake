@@ -47,7 +47,13 @@ function(scw_pipeline_config name)
 endfunction()
 
 function(scw_pipeline_build lib)
-  cmake_parse_arguments(ARG "" "CONFIG;PREFIX" "BLOCK_PPC;LANE_PPC;TOP_PPC" ${ARGN})
+  cmake_parse_arguments(ARG "TRACE_TOP" "CONFIG;PREFIX" "BLOCK_PPC;LANE_PPC;TOP_PPC" ${ARGN})
+  # Only a top built with TRACE_TOP can write an FST (scw soak's trace around a divergence);
+  # tracing costs every block compile time, so the rest are built without.
+  set(top_trace NO_TRACE)
+  if(ARG_TRACE_TOP)
+    set(top_trace "")
+  endif()
   scw_pipeline_config(${ARG_CONFIG})
   set(frame MaxWidthPx=${cfg_MaxWidthPx} MaxHeight=${cfg_MaxHeight})
   set(tiles MaxTilesX=${cfg_MaxTilesX} MaxTilesY=${cfg_MaxTilesY}
@@ -77,7 +83,7 @@ function(scw_pipeline_build lib)
                  STAGE rectify disparity road labelling warning pipeline
                  PARAMS Ppc=${p} ${frame} RectRows=${cfg_RectRows} GridLog2=${cfg_GridLog2}
                         Window=${cfg_Window} NumDisp=${cfg_NumDisp} ${tiles}
-                        MaxDisparityPx=${cfg_MaxDisparityPx} NO_TRACE)
+                        MaxDisparityPx=${cfg_MaxDisparityPx} ${top_trace})
   endforeach()
   scw_verilate(${lib} TOP scw_warning PREFIX ${v}_warning STAGE warning
                PARAMS MaxDisparityPx=${cfg_MaxDisparityPx} NO_TRACE)

@@ -24,7 +24,7 @@ disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const Dispar
   const int n = candidates<NumDisp>(cfg);  // the first n of the built candidates
   int best = 0;
   for (int d = 1; d < n; ++d)
-    if (sad[d] < sad[best]) best = d;  // strict <: the smallest d wins ties
+    if (sad[d] <= sad[best]) best = d;  // <=: the largest d wins ties, as in cv::StereoBM
   const sad_t m = sad[best];
   if (cfg.sad_limit > 0 && m > static_cast<sad_t>(cfg.sad_limit)) return invalid_code(cfg);
   if (cfg.texture_threshold > 0 && texture < static_cast<sad_t>(cfg.texture_threshold))

@@ -113,6 +113,8 @@ class Labelling {
   const out_type& out() const { return out_; }
   bool error() const { return err_sticky_; }
   Phase phase() const { return phase_; }
+  /// Emit runs beside the phases above (the previous frame's objects leave while this one streams).
+  bool emitting() const { return emitting_; }
 
   /// Second-pass support (not part of the hardware): if set, *m holds each pixel's node + 1
   /// (0 = none) at y * width + x of the frame being emitted, and root(node) its object's root,

@@ -134,6 +134,7 @@ class Rectify {
         write_beat(raw, d_avail);
       }
     } else if (skip_ && may) {
+      blank_[in_.slot] = true;  // a row the frame did not send (or sent part of) reads 0
       in_.col = cols() - 1;  // one row of the interrupted frame per clock, no data
       in_.step(cols());
       row_done(d_avail);
@@ -145,8 +146,12 @@ class Rectify {
 
   void write_beat(const raw_type& raw, int& d_avail) {
     if (raw.eol != (in_.col == cols() - 1)) err_ |= kErrRawGeometry;
-    for (int i = 0; i < P; ++i) buf_[in_.slot][in_.col * P + i] = raw.px[i];
-    if (in_.step(cols())) row_done(d_avail);
+    const int slot = in_.slot;
+    for (int i = 0; i < P; ++i) buf_[slot][in_.col * P + i] = raw.px[i];
+    if (in_.step(cols())) {
+      blank_[slot] = false;  // a row written to its end
+      row_done(d_avail);
+    }
   }
 
   void row_done(int& d_avail) {
@@ -209,10 +214,13 @@ class Rectify {
     if (use0 != t.row0 || use1 != t.row1) err_ |= kErrMapWindow;
     const int s0 = (out_.slot + dy) & (R - 1);
     const int s1 = (s0 + 1) & (R - 1);
-    const int f00 = use0 && t.col0 ? buf_[s0][t.x0] : 0;
-    const int f10 = use0 && t.col1 ? buf_[s0][t.x0 + 1] : 0;
-    const int f01 = use1 && t.col0 ? buf_[s1][t.x0] : 0;
-    const int f11 = use1 && t.col1 ? buf_[s1][t.x0 + 1] : 0;
+    // A blank slot's row was never sent in this frame (a cut frame): it reads 0, whatever the
+    // RAM holds from before (on a board: earlier frames, or power-up contents after reset).
+    const bool live0 = use0 && !blank_[s0], live1 = use1 && !blank_[s1];
+    const int f00 = live0 && t.col0 ? buf_[s0][t.x0] : 0;
+    const int f10 = live0 && t.col1 ? buf_[s0][t.x0 + 1] : 0;
+    const int f01 = live1 && t.col0 ? buf_[s1][t.x0] : 0;
+    const int f11 = live1 && t.col1 ? buf_[s1][t.x0 + 1] : 0;
     const int a = (f00 << F) + (f10 - f00) * t.fx;
     const int b = (f01 << F) + (f11 - f01) * t.fx;
     return static_cast<pixel_t>(((a << F) + (b - a) * t.fy + (1 << (2 * F - 1))) >> (2 * F));
@@ -223,6 +231,15 @@ class Rectify {
   // different banks) and keeps one copy per output lane:
   // ARRAY_PARTITION cyclic factor=2 on both dimensions, and P-fold replication.
   std::array<std::array<pixel_t, Params::kMaxWidthPx>, R> buf_{};
+  // Per row slot: no row of data since reset or since a cut frame skipped it (the RTL's
+  // blank_q, reset to all ones). Set by the skip, cleared when a row is written to its end; the
+  // reader sees either from the next clock, as it sees the row itself.
+  std::array<bool, R> blank_ = all_blank();
+  static constexpr std::array<bool, R> all_blank() {
+    std::array<bool, R> b{};
+    for (auto& x : b) x = true;
+    return b;
+  }
   int avail_ = 0;
   std::uint8_t err_ = 0;
   // writer

@@ -4,7 +4,9 @@
 #include "host/app/model_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
@@ -135,6 +137,33 @@ void AnnClassifier::save(const std::string& path) const {
 
 namespace {
 
+/// Every matrix node under `n` ({rows, cols, dt, data}) must hold as many values as its size
+/// says before OpenCV reads it: cv::read allocates rows x cols from the file's word alone, so a
+/// damaged size asks for gigabytes (a fuzz finding, fuzz/regressions/model/).
+void check_matrices(const cv::FileNode& n, const std::string& path, int depth = 0) {
+  if (depth > 16) throw std::runtime_error("model '" + path + "' is nested too deeply");
+  if (n.isMap() && !n["rows"].empty() && !n["cols"].empty() && !n["data"].empty()) {
+    const auto whole = [&](const cv::FileNode& v) {
+      if (!v.isInt()) throw std::runtime_error("model '" + path + "': a matrix size is not a number");
+      return static_cast<long long>(static_cast<int>(v));
+    };
+    long long cn = 1;
+    if (n["dt"].isString()) {
+      const std::string dt = n["dt"];
+      if (!dt.empty() && std::isdigit(static_cast<unsigned char>(dt[0]))) cn = std::atoll(dt.c_str());
+    }
+    const long long rows = whole(n["rows"]), cols = whole(n["cols"]);
+    const long long have = static_cast<long long>(n["data"].size());
+    if (rows < 0 || cols < 0 || cn < 1 || cn > 512 || rows * cols * cn != have)
+      throw std::runtime_error("model '" + path + "' is damaged: a matrix of " +
+                               std::to_string(rows) + " x " + std::to_string(cols) + " holds " +
+                               std::to_string(have) + " values");
+    return;
+  }
+  if (n.isMap() || n.isSeq())
+    for (auto it = n.begin(); it != n.end(); ++it) check_matrices(*it, path, depth + 1);
+}
+
 std::unique_ptr<Classifier> read_classifier(const std::string& path) {
   // Checked first: cv::FileStorage would also log its own error line to stderr.
   if (!std::ifstream(path)) throw std::runtime_error("cannot open model '" + path + "'");
@@ -193,6 +222,7 @@ std::unique_ptr<Classifier> read_classifier(const std::string& path) {
   if (!fs[node].isMap())
     throw std::runtime_error("model '" + path + "' of kind " + to_string(kind) + " has no " + node +
                              " map");
+  check_matrices(fs[node], path);
   try {
     if (kind == ModelKind::kSvm) {
       auto svm = cv::ml::SVM::create();

@@ -18,6 +18,7 @@ void add_synth_command(CLI::App& app);  // `scw synth`
 void add_sim_command(CLI::App& app);    // `scw sim`
 void add_scene_command(CLI::App& app);  // `scw scene`
 void add_eval_command(CLI::App& app);   // `scw eval`
+void add_soak_command(CLI::App& app);   // `scw soak`
 /// `scw vectors rectify`, added under the `vectors` subcommand.
 void add_vectors_rectify_command(CLI::App& vectors);
 /// `scw vectors disparity`, added under the `vectors` subcommand.

@@ -6,3 +6,7 @@ target_link_libraries(scw PRIVATE scw_rtl_engine)
 if(SCW_THESIS_RTL)
   target_compile_definitions(scw PRIVATE SCW_THESIS_RTL=1)
 endif()
+
+# `scw soak`: the small build's top against the C++ chain, long runs and resets (host/soak/).
+target_sources(scw PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/cmd_soak.cpp)
+target_link_libraries(scw PRIVATE scw_soak)

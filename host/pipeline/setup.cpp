@@ -10,6 +10,19 @@
 
 namespace scw::host::pipeline {
 
+StageOptions small_build_options() {
+  StageOptions o;
+  o.mode = disparity::Mode::opencv;
+  o.dmin = 0;
+  o.num_disp = 16;
+  o.tiles_x = 2;
+  o.tiles_y = 2;
+  o.min_area = 20;
+  o.warning.focal_px = 100.0;
+  o.warning.baseline_m = 0.2;
+  return o;
+}
+
 std::vector<hls::rectify::KnotPoint> identity_knots(int width, int height, int grid_log2) {
   const int cols = rectify::knot_count(width, grid_log2);
   const int rows = rectify::knot_count(height, grid_log2);

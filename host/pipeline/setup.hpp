@@ -31,6 +31,10 @@ struct StageOptions {
   int road_min_count = road::RoadSetup{}.min_count;  // pixels the road stage's fit needs
 };
 
+/// The settings the small build's runs use (its tests, `scw soak`): opencv mode, disparities
+/// 0 .. 15, 2 x 2 tiles, objects of 20 px, a camera of f 100 px and b 0.2 m.
+StageOptions small_build_options();
+
 /// Knots of the map that leaves an image as it is (rectified input): knot (i, j) at pixel
 /// (i G, j G), G = 2^grid_log2.
 std::vector<hls::rectify::KnotPoint> identity_knots(int width, int height, int grid_log2);

@@ -93,7 +93,7 @@ std::vector<std::uint16_t> disparity_reference(const std::uint8_t* left, const s
       int best = 0;  // candidate index k, d = dmin + k
       for (int k = 0; k < num_disp; ++k) {
         sad[k] = sad_reference(l, r, width, u, v, dmin + k, window_n);
-        if (sad[k] < sad[best]) best = k;
+        if (sad[k] <= sad[best]) best = k;
       }
       const int min_sad = sad[best];
 

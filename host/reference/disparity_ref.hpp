@@ -30,7 +30,8 @@ int sad_reference(const std::uint8_t* l, const std::uint8_t* r, int width, int u
 /// cfg.dmin + num_disp - 1 with an N x N window (N = window_n, odd), one disp_t per pixel
 /// (Q11.4 in 16 bits; docs/disparity.md "Semantics and the reference"):
 ///  - images: the raw pixels, or both x-Sobel prefiltered when cfg.prefilter;
-///  - winner: the smallest SAD, the smallest d on ties (eq. 2.16, strict < scanning upwards);
+///  - winner: the smallest SAD, the largest d on ties (eq. 2.16 with cv::StereoBM's tie rule: its
+///    candidate index runs from the largest d down and keeps the first minimum);
 ///  - valid region: r <= v < H - r and r + max(DMax, 0) <= u < W - r + min(dmin, 0),
 ///    r = N/2 (every tap of every candidate inside both images); invalid_code(cfg) outside;
 ///  - rejections (each off at 0, each to invalid_code(cfg)): texture, uniqueness, SAD limit;

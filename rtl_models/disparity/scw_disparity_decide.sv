@@ -17,13 +17,13 @@
 //   D   the OR of every rejection and the value, registered on disp_o
 //   Latency = T + 4 = scw::hls::disparity::decide_latency(NumDisp) (decide_latency.hpp).
 //
-// Sub-pixel: when the fit applies, prev > m (a tie at best - 1 would have won) and next >= m,
+// Sub-pixel: when the fit applies, next > m (a tie at best + 1 would have won) and prev >= m,
 // so den = prev + next - 2m + |diff| = 2 mx > 0 and frac = sign(diff) q with
 // q = floor(|diff| 128 / mx) <= 128. The output needs only (frac + 15) >>> 4, which is
 // ceil(q / 16) for diff > 0 and -floor(q / 16) otherwise: qhi = floor(|diff| 8 / mx) from three
 // restoring steps, and whether q mod 16 != 0, which is 16 r >= mx for their remainder r.
-// |diff| = mx (q = 128) happens only for diff > 0; it comes out as qhi = 7 with r = mx, which
-// rounds up to the same 8, so no fourth step. The adjustment is in -7 .. 8, so
+// |diff| = mx (q = 128) happens only for diff < 0, when prev = m ("full"): the three steps give
+// qhi = 7 there, so full picks -8 directly, and no fourth step. The adjustment is in -8 .. 8, so
 // d * 16 + adj = {adj < 0 ? d - 1 : d, adj[3:0]}: no adder at the output.
 //
 // Uniqueness: floor(p / 100) = floor(floor(p / 4) / 25), and floor(x / 25) = (x RecipMul) >>
@@ -63,7 +63,7 @@ module scw_disparity_decide #(
   localparam int unsigned IdxW       = Levels;
   localparam int unsigned TreeStages = Levels;
   localparam int unsigned SadW       = NumDisp * SadBits;
-  localparam int unsigned NodeW      = IdxW + 3 * SadBits;
+  localparam int unsigned NodeW      = 1 + IdxW + 3 * SadBits;
   localparam int unsigned ThrW       = SadBits + 2;  // thresh <= 3.55 m
   localparam int unsigned DispW      = 12;           // the bits of d that reach d * 16
   /* verilator lint_off UNUSEDPARAM */
@@ -159,17 +159,19 @@ module scw_disparity_decide #(
 
   // ---- t1 .. tT: argmin tree ------------------------------------------------------------
   typedef struct packed {
+    logic               unused;  // not a candidate in use: loses every compare, ties included
     logic [IdxW-1:0]    idx;
     logic [SadBits-1:0] sad;   // all ones when the candidate is not in use
     logic [SadBits-1:0] prev;  // sad[idx - 1]
     logic [SadBits-1:0] next;  // sad[idx + 1]
   } node_t;
-  localparam int unsigned NodeSad = 2 * SadBits;  // node_t's sad field
+  localparam int unsigned NodeSad = 2 * SadBits;  // node_t's sad field, {unused, idx} above it
+  localparam int unsigned NodeKey = NodeW - 1;    // node_t's unused bit, the compare's top
 
   // Level 0 holds the leaves (candidate d at node d, padded to a power of two), level l the
   // winners of pairs of level l - 1, level Levels the root. A candidate not in use (and a padding
-  // leaf) reads all ones: it has a larger d than every candidate in use, so it loses even a tie
-  // and the winner is always in use. One array per level, each level reading the one below by
+  // leaf) is marked unused and reads all ones: the compare key {unused, sad} puts it above every
+  // candidate in use, even one whose SAD is all ones, so the winner is always in use. One array per level, each level reading the one below by
   // name (Yosys 0.23 resolves only names of generate blocks already elaborated, so the levels
   // count up from the leaves): a single vector for the whole tree is circular logic to the
   // simulator, and a wide vector per level costs it wide concatenations every clock.
@@ -179,9 +181,12 @@ module scw_disparity_decide #(
     if (l == 0) begin : gen_leaves
       for (genvar d = 0; d < Nodes; d++) begin : gen_leaf
         logic [SadBits-1:0] sad, prev, next;
+        logic unused;
         if (d < NumDisp) begin : gen_cand
+          assign unused = !in_use_q[d];
           assign sad = in_use_q[d] ? sad_i[d*SadBits +: SadBits] : '1;
         end else begin : gen_pad
+          assign unused = 1'b1;
           assign sad = '1;
         end
         if (d > 0 && d < NumDisp) begin : gen_prev
@@ -194,7 +199,7 @@ module scw_disparity_decide #(
         end else begin : gen_no_next
           assign next = '0;
         end
-        assign v[d] = {IdxW'(d), sad, prev, next};
+        assign v[d] = {unused, IdxW'(d), sad, prev, next};
       end
     end else begin : gen_pairs
       for (genvar k = 0; k < Nodes; k++) begin : gen_node
@@ -203,15 +208,21 @@ module scw_disparity_decide #(
         logic [NodeW-1:0] a, b, win;
         assign a   = gen_lvl[l-1].v[2*k];
         assign b   = gen_lvl[l-1].v[2*k+1];
-        // Strict <: on a tie the left child, the smaller d, wins, as in decide()'s loop.
-        assign win = (b[NodeSad +: SadBits] < a[NodeSad +: SadBits]) ? b : a;
+        // <=: on a tie the right child, the larger d, wins, as in decide()'s loop and in
+        // cv::StereoBM (its candidate index runs from the largest d down, keeping the first).
+        assign win = ({b[NodeKey], b[NodeSad +: SadBits]} <= {a[NodeKey], a[NodeSad +: SadBits]})
+                         ? b : a;
         // Every level registered: two compare-and-select levels in a row are too long a path.
         always_ff @(posedge clk_i) v[k] <= win;
       end
     end
   end
 
+  // The root's unused bit is never read: a candidate is always in use (cfg_num_i 0 means all),
+  // so the root is one.
+  /* verilator lint_off UNUSEDSIGNAL */
   node_t root;
+  /* verilator lint_on UNUSEDSIGNAL */
   logic t_region, t_tex_rej;
   assign root = gen_lvl[Levels].v[0];
   assign {t_region, t_tex_rej} = side_q[2*TreeStages-1 -: 2];
@@ -246,7 +257,7 @@ module scw_disparity_decide #(
   logic [SadBits-1:0] a_m_q, a_pn_q, a_np_q, a_pm_q, a_nm_q;
   logic [DispW-1:0] a_d_q;
   logic [NumDisp-1:0] a_far_q;
-  logic a_inv_q, a_fit_q, a_neg_q;
+  logic a_inv_q, a_fit_q, a_neg_q, a_full_q;
   always_ff @(posedge clk_i) begin
     a_lo_q  <= LoW'(root.sad) * LoW'(k_lo_q);  // the DSPs' M registers
     a_hi_q  <= HiW'(root.sad) * HiW'(k_hi_q);
@@ -256,6 +267,7 @@ module scw_disparity_decide #(
     a_fit_q <= sub_q && root.idx != '0 && root.idx != last_q;
     a_far_q <= far;
     a_neg_q <= neg;
+    a_full_q <= neg && root.prev == root.sad;
     a_pn_q  <= pn;
     a_np_q  <= np;
     a_pm_q  <= pm;
@@ -268,7 +280,7 @@ module scw_disparity_decide #(
   logic [SadBits-1:0] b_m_q, b_a_q, b_mx_q;
   logic [DispW-1:0] b_d_q;
   logic [NumDisp-1:0] b_far_q;
-  logic b_inv_q, b_fit_q, b_neg_q;
+  logic b_inv_q, b_fit_q, b_neg_q, b_full_q;
   always_ff @(posedge clk_i) begin
     b_lo_q  <= a_lo_q;  // the DSPs' P registers
     b_hi_q  <= a_hi_q;
@@ -278,6 +290,7 @@ module scw_disparity_decide #(
     b_fit_q <= a_fit_q;
     b_far_q <= a_far_q;
     b_neg_q <= a_neg_q;
+    b_full_q <= a_full_q;
     b_a_q   <= a_neg_q ? a_np_q : a_pn_q;
     b_mx_q  <= a_neg_q ? a_nm_q : a_pm_q;
   end
@@ -300,7 +313,7 @@ module scw_disparity_decide #(
   logic [SadBits+4:0] c_mx17_q;
   logic [DispW-1:0] c_d_q, c_dm1_q;
   logic [NumDisp-1:0] c_far_q;
-  logic c_qhi_q, c_inv_q, c_fit_q, c_neg_q;
+  logic c_qhi_q, c_inv_q, c_fit_q, c_neg_q, c_full_q;
   always_ff @(posedge clk_i) begin
     c_q100_q <= ThrW'((SumW'(b_lo_q) + (SumW'(b_hi_q) << KSplit)) >> KShift);
     c_m_q    <= b_m_q;
@@ -310,6 +323,7 @@ module scw_disparity_decide #(
     c_fit_q  <= b_fit_q;
     c_far_q  <= b_far_q;
     c_neg_q  <= b_neg_q;
+    c_full_q <= b_full_q;
     c_qhi_q  <= c_s2[SadBits];
     c_r_q    <= c_s2[SadBits-1:0];
     c_mx_q   <= b_mx_q;
@@ -336,7 +350,7 @@ module scw_disparity_decide #(
   logic [SadBits+4:0] d_mx17_q;
   logic [DispW-1:0] d_d_q, d_dm1_q;
   logic [1:0] d_qhi_q;
-  logic d_inv_q, d_fit_q, d_neg_q;
+  logic d_inv_q, d_fit_q, d_neg_q, d_full_q;
   always_ff @(posedge clk_i) begin
     d_thresh_q <= ThrW'(c_m_q) + c_q100_q;
     d_inv_q    <= c_inv_q;
@@ -344,6 +358,7 @@ module scw_disparity_decide #(
     d_dm1_q    <= c_dm1_q;
     d_fit_q    <= c_fit_q;
     d_neg_q    <= c_neg_q;
+    d_full_q   <= c_full_q;
     d_qhi_q    <= {c_qhi_q, d_s1[SadBits]};
     d_r_q      <= d_s1[SadBits-1:0];
     d_mx_q     <= c_mx_q;
@@ -361,7 +376,14 @@ module scw_disparity_decide #(
 
   logic [DispW-1:0] e_d_q, e_dm1_q;
   logic [1:0] e_qhi_q;
-  logic e_inv_q, e_fit_q, e_neg_q, e_q0_q, e_ge17_q, e_ge1_q;
+  logic e_inv_q, e_fit_q, e_neg_q, e_full_q, e_q0_q, e_ge17_q, e_ge1_q;
+  // Flip-flops, not the ends of SRLs (full's and qhi's registers are plain delay lines): an
+  // SRL's clock-to-output in front of the output select measured 3,398 ps alone, 3,557 in the
+  // small top.
+  (* keep *) always_ff @(posedge clk_i) begin
+    e_qhi_q  <= d_qhi_q;
+    e_full_q <= d_full_q;
+  end
   always_ff @(posedge clk_i) begin
     e_urej_q <= urej;
     e_inv_q  <= d_inv_q;
@@ -369,7 +391,6 @@ module scw_disparity_decide #(
     e_dm1_q  <= d_dm1_q;
     e_fit_q  <= d_fit_q;
     e_neg_q  <= d_neg_q;
-    e_qhi_q  <= d_qhi_q;
     e_q0_q   <= {d_r_q, 1'b0} >= {1'b0, d_mx_q};
     e_ge17_q <= {d_r_q, 5'b0} >= d_mx17_q;
     e_ge1_q  <= {d_r_q, 5'b0} >= (SadBits + 5)'(d_mx_q);
@@ -377,10 +398,11 @@ module scw_disparity_decide #(
 
   // ---- F: the value, or the invalid code on any rejection -------------------------------
   logic [2:0] qhi;
-  logic [4:0] adj;  // (frac + 15) >>> 4, -7 .. 8
+  logic [4:0] adj;  // (frac + 15) >>> 4, -8 .. 8
   logic [15:0] value, disp_q;
   assign qhi   = {e_qhi_q, e_q0_q};
-  assign adj   = e_neg_q ? -{2'b0, qhi} : {2'b0, qhi} + {4'b0, e_q0_q ? e_ge17_q : e_ge1_q};
+  assign adj   = e_neg_q ? (e_full_q ? 5'b11000 : -{2'b0, qhi})  // 5'b11000: -8
+                       : {2'b0, qhi} + {4'b0, e_q0_q ? e_ge17_q : e_ge1_q};
   assign value = !e_fit_q ? {e_d_q, 4'b0} : {adj[4] ? e_dm1_q : e_d_q, adj[3:0]};
   always_ff @(posedge clk_i) begin
     disp_q <= (e_inv_q || |e_urej_q) ? invalid_q : value;

@@ -152,8 +152,8 @@ module scw_rectify #(
   logic [AvW-1:0] fdiff_q;  // fdiff = fdiff_q + up_q - dn_q, <= D + 1 (one-row frames)
   logic wr_ok_q, ge_d_q, nz_q;
   // The compares of avail_q and fdiff_q are made a clock ahead, from the values before and the
-  // events in flight, so a flag's next value is two selects from registers (le_q, fz_q have
-  // no reset: like the cfg registers they settle during reset, where the counters hold 0).
+  // events in flight, so a flag's next value is two selects from registers (le_q and fz_q
+  // are reset to the compares of the counters' reset values).
   logic [7:0] le_w;         // le_w[j] = avail_q <= D + 3 - j
   logic [5:0] le_q;         // le_q[i] = avail_q <= D + 2 - i
   logic [3:0] le_a;         // le_q[a + j], a = 1 + inc_q - dec_q
@@ -174,11 +174,22 @@ module scw_rectify #(
   for (genvar m = 0; m < 5; m++) begin : gen_eq
     assign eq_w[m] = fdiff_q == AvW'(m - 1);
   end
+  // In reset they take the compares of the counters' reset values (avail 0: D + 2 - i >= 0,
+  // the sign of dlim; fdiff 0), so a reset of a single clock leaves no stale compare behind.
+  logic [5:0] le_rst;
+  for (genvar i = 0; i < 6; i++) begin : gen_le_rst
+    assign le_rst[i] = !dlim_q[(i+1)*(AvW+2) + AvW+1];
+  end
   always_ff @(posedge clk_i) begin
-    // avail_q' = avail_q + a - 1: avail_q' <= D + 2 - i is le_w[i + a]
-    le_q <= (inc_q == dec_q) ? le_w[6:1] : (inc_q ? le_w[7:2] : le_w[5:0]);
-    // fdiff_q' = fdiff_q + g - 1, g = 1 + up_q - dn_q: fdiff_q' == k is eq_w[k + 2 - g]
-    fz_q <= (up_q == dn_q) ? eq_w[3:1] : (up_q ? eq_w[2:0] : eq_w[4:2]);
+    if (!rst_ni) begin
+      le_q <= le_rst;
+      fz_q <= 3'b001;
+    end else begin
+      // avail_q' = avail_q + a - 1: avail_q' <= D + 2 - i is le_w[i + a]
+      le_q <= (inc_q == dec_q) ? le_w[6:1] : (inc_q ? le_w[7:2] : le_w[5:0]);
+      // fdiff_q' = fdiff_q + g - 1, g = 1 + up_q - dn_q: fdiff_q' == k is eq_w[k + 2 - g]
+      fz_q <= (up_q == dn_q) ? eq_w[3:1] : (up_q ? eq_w[2:0] : eq_w[4:2]);
+    end
   end
   assign le_a = (inc_q == dec_q) ? le_q[4:1] : (inc_q ? le_q[5:2] : le_q[3:0]);
   assign nb   = dec ? {1'b0, inc} : {inc && pend_next, inc != pend_next};
@@ -307,6 +318,33 @@ module scw_rectify #(
       rheld_q_data <= in_data_i;
       rheld_eol_q  <= in_eol_i;
     end
+  end
+
+  // A row slot is blank when its row was skipped by a cut frame (the rest of a row cut short
+  // included), and after reset; a row written to its end clears it. Both at row_done, when the
+  // row becomes the reader's: the reader's taps in a blank slot read 0, whatever the RAM holds
+  // (after reset: its power-up contents). The event lands a clock late, like avail's (inc_q),
+  // and blank_now already holds it, so the reader sees it as early as the model's reader does
+  // and the handshake's logic does not fan out to the Rows bits.
+  logic [Rows-1:0] blank_q, blank_now;
+  logic ev_q, ev_blank_q;
+  logic [SlotW-1:0] ev_slot_q;
+  // One compare per slot: an indexed write here is a 32-bit offset to Yosys 0.23 (1.8 ns more).
+  for (genvar k = 0; k < Rows; k++) begin : gen_blank
+    assign blank_now[k] = (ev_q && ev_slot_q == SlotW'(k)) ? ev_blank_q : blank_q[k];
+  end
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      blank_q <= '1;
+      ev_q    <= 1'b0;
+    end else begin
+      blank_q <= blank_now;
+      ev_q    <= row_done;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    ev_blank_q <= !wr_do;
+    ev_slot_q  <= in_slot_q;
   end
 
   // What a write puts in each column-parity RAM: the pixels of that parity, and its address.
@@ -549,9 +587,16 @@ module scw_rectify #(
     logic signed [DW-1:0] s0_x0_q, s0_y0_q;
     logic [FracBits-1:0] s0_fx_q, s0_fy_q;
     logic s0_p_q, s0_q_q;
+    // The blank bits as the reader finds them now, and the two slots: picked at s1, so the
+    // slot's add and the Rows-to-1 select are not one path.
+    logic [Rows-1:0] s0_blank_q;
+    logic [SlotW-1:0] s0_slot0_q, s0_slot1_q;
     logic [1:0] s0_sub_q;  // which pixel of its word column parity c's tap is (Q > 1)
     always_ff @(posedge clk_i) begin
       if (adv) begin
+        s0_blank_q <= blank_now;
+        s0_slot0_q <= slot0;
+        s0_slot1_q <= slot0p1;
         s0_x0_q  <= DW'(x0i);
         s0_y0_q  <= DW'(y0i);
         s0_fx_q  <= fx;
@@ -564,6 +609,7 @@ module scw_rectify #(
 
     // -- s1: RAM read; taps against image and window ------------------------------------------
     logic s1_col0_q, s1_col1_q, s1_in0_q, s1_in1_q, s1_win0_q, s1_win1_q, s1_p_q, s1_q_q;
+    logic s1_blank0_q, s1_blank1_q;
     logic [FracBits-1:0] s1_fx_q, s1_fy_q;
     logic [1:0] s1_sub_q;
     always_ff @(posedge clk_i) begin
@@ -576,6 +622,8 @@ module scw_rectify #(
         s1_win1_q <= (s0_y0_q >= s0_lo1_q) && (s0_y0_q <= s0_hi1_q);
         s1_p_q    <= s0_p_q;
         s1_q_q    <= s0_q_q;
+        s1_blank0_q <= s0_blank_q[s0_slot0_q];
+        s1_blank1_q <= s0_blank_q[s0_slot1_q];
         s1_fx_q   <= s0_fx_q;
         s1_fy_q   <= s0_fy_q;
         s1_sub_q  <= s0_sub_q;
@@ -586,7 +634,7 @@ module scw_rectify #(
     // A row is needed when it holds a contributing tap (map_taps.hpp); a needed row outside
     // the window reads 0 and flags err_o[2]. Tap (row offset o, column offset k) sits in RAM
     // (p ^ o, q ^ k), so the enables are permuted to RAM order here.
-    logic any_col, row0, row1, use0, use1;
+    logic any_col, row0, row1, use0, use1, live0, live1;
     logic [3:0] u;  // tap enables, index o * 2 + k
     logic s2_p_q, s2_q_q;
     logic [FracBits-1:0] s2_fx_q, s2_fy_q;
@@ -596,7 +644,10 @@ module scw_rectify #(
     assign row1    = any_col && s1_in1_q;
     assign use0    = row0 && s1_win0_q && !s1_zero_q;
     assign use1    = row1 && s1_win1_q && !s1_zero_q;
-    assign u       = {use1 && s1_col1_q, use1 && s1_col0_q, use0 && s1_col1_q, use0 && s1_col0_q};
+    assign live0   = use0 && !s1_blank0_q;  // a blank slot's taps read 0 (blank_q)
+    assign live1   = use1 && !s1_blank1_q;
+    assign u       = {live1 && s1_col1_q, live1 && s1_col0_q, live0 && s1_col1_q,
+                      live0 && s1_col0_q};
     logic s2_winerr_q;
     assign lane_winerr[l] = s2_winerr_q;
     always_ff @(posedge clk_i) begin

@@ -188,6 +188,11 @@ class PipelineChain {
   Fifo<hls::labelling::LabelPacket>& objects() { return *objects_; }
   Fifo<Result>& result_fifo() { return *out_; }
 
+  /// What the labelling stage is doing this cycle, read from its C++ model ("" when it runs as
+  /// RTL): its phase (init, frame, drain, border, resolve) and "+emit" while Emit runs beside it.
+  /// Reset trials say with it which of the stage's phases each reset cut.
+  std::string labelling_activity() const { return labelling_activity_ ? labelling_activity_() : ""; }
+
  private:
   template <typename T>
   static constexpr bool kBuilt = !std::is_void_v<T>;
@@ -325,8 +330,14 @@ class PipelineChain {
     const auto cfg = setup_.labelling_config();
     if (e == Engine::cpp) {
       hls::labelling::check_config<Params>(cfg);
-      sim_.add<StreamComponent<LabellingModel<Params>>>("labelling", LabellingModel<Params>(cfg),
-                                                        in, *objects_);
+      auto& c = sim_.add<StreamComponent<LabellingModel<Params>>>(
+          "labelling", LabellingModel<Params>(cfg), in, *objects_);
+      labelling_activity_ = [&c] {
+        using K = hls::labelling::Labelling<Params>;
+        static const char* const kNames[] = {"init", "frame", "drain", "border", "resolve"};
+        const K& k = c.model().kernel();
+        return std::string(kNames[k.phase()]) + (k.emitting() ? "+emit" : "");
+      };
       return;
     }
     using VM = typename Rtl::labelling;
@@ -395,6 +406,7 @@ class PipelineChain {
   Sink<hls::labelling::LabelPacket>* table_sink_ = nullptr;
   Source<raw_beat>* src_l_ = nullptr;
   Source<raw_beat>* src_r_ = nullptr;
+  std::function<std::string()> labelling_activity_;
   std::int64_t start_ = 0;
   bool running_ = false;
 };

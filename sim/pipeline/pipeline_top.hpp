@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,8 +42,18 @@ struct TopRun {
   std::vector<hls::pipeline::PipelineResultPacket> results;
   std::vector<std::int64_t> result_cycles;
   std::vector<hls::labelling::LabelPacket> object_table;  // every word of the obj_* output
-  std::vector<std::int64_t> first_in_cycles;  // left input beats with sof
+  std::vector<std::int64_t> first_in_cycles;        // left input beats with sof
+  std::vector<std::int64_t> first_in_right_cycles;  // right input beats with sof
   std::int64_t cycles = 0;
+  std::uint64_t harness_start = 0;  // the harness's cycle count at this run's cycle 0 (traces)
+};
+
+/// Optional controls of a run: stop at a cycle (a reset is about to cut the frames short) and
+/// report progress.
+struct TopRunControl {
+  std::int64_t stop_at = -1;  // >= 0: return before driving this cycle, whatever is out
+  std::function<void(std::int64_t cycle, std::size_t results)> progress;
+  std::int64_t every = 100000;  // cycles between progress calls
 };
 
 template <typename VM, typename Build>
@@ -57,22 +68,26 @@ class PipelineTop : private RtlAdapter<VM> {
     VM& m = this->dut();
     load(false, s, s.left_knots);
     load(true, s, s.right_knots);
+    knot_cycles_ = 2 * s.knot_rows * s.knot_cols;
     m.knot_we_i = 0;
     m.run_i = 1;
   }
 
   /// Streams the frames until `frames` results are out, the sources and the sink stalling as
   /// PipelineChain's do under the same patterns. Throws std::runtime_error after `max_cycles`.
+  /// Each run starts at its own cycle 0 with fresh sources and sinks; the top keeps its state.
   TopRun run(const std::vector<raw_beat>& left, const std::vector<raw_beat>& right,
              std::size_t frames, std::int64_t max_cycles, const StallPattern& in = {},
-             const StallPattern& out = {}) {
+             const StallPattern& out = {}, const TopRunControl& ctl = {}) {
     Driver dl(left, in), dr(right, in.other_stream(kRightInputSalt));
     StallGen sink(out, StallGen::Side::kOutput);
     StallGen table_sink(out.other_stream(kObjectTableSalt), StallGen::Side::kOutput);
     VM& m = this->dut();
     TopRun r;
+    r.harness_start = this->harness().cycles();
     using O = BeatLayout<hls::labelling::LabelPacket>;
-    for (std::int64_t c = 0; r.results.size() < frames; ++c) {
+    for (std::int64_t c = 0; r.results.size() < frames && c != ctl.stop_at; ++c) {
+      if (ctl.progress && c % ctl.every == 0) ctl.progress(c, r.results.size());
       if (c >= max_cycles)
         throw std::runtime_error("scw_pipeline: " + std::to_string(r.results.size()) + " of " +
                                  std::to_string(frames) + " results after " +
@@ -87,6 +102,7 @@ class PipelineTop : private RtlAdapter<VM> {
       m.eval();
       const bool l_take = lv && m.l_ready_o, r_take = rv && m.r_ready_o;
       if (l_take && dl.beat().sof) r.first_in_cycles.push_back(c);
+      if (r_take && dr.beat().sof) r.first_in_right_cycles.push_back(c);
       if (out_ready && m.out_valid_o) {
         r.results.push_back(read_stage_out<hls::pipeline::PipelineResultPacket>(m));
         r.result_cycles.push_back(c);
@@ -101,6 +117,24 @@ class PipelineTop : private RtlAdapter<VM> {
       r.cycles = c + 1;
     }
     return r;
+  }
+
+  /// Holds rst_ni low for `cycles` clocks, every input stream idle, as a board does when its
+  /// camera link drops: the blocks' registers return to their reset values, the RAMs (the
+  /// knots among them) keep what they hold. Then run_i stays low for as many clocks as loading
+  /// the knots took, without loading them: a top built afresh and this one are then on the
+  /// same clock from the next run()'s cycle 0, and that run is right only if the knot RAM kept
+  /// the knots and every register that must be reset was.
+  void reset(int cycles) {
+    VM& m = this->dut();
+    m.l_valid_i = 0;
+    m.r_valid_i = 0;
+    m.out_ready_i = 0;
+    m.obj_ready_i = 0;
+    m.run_i = 0;
+    this->harness().reset(cycles);
+    for (int i = 0; i < knot_cycles_; ++i) this->tick();
+    m.run_i = 1;
   }
 
   /// The sticky error bits: {labelling, disparity, rectify right [2:0], rectify left [2:0]}.
@@ -153,6 +187,8 @@ class PipelineTop : private RtlAdapter<VM> {
     bool offering = false;
     raw_beat idle{};
   };
+
+  int knot_cycles_ = 0;
 
   void load(bool right, const PipelineSetup& s, const std::vector<hls::rectify::KnotPoint>& k) {
     VM& m = this->dut();

@@ -46,16 +46,47 @@ inline void randomise_unreset_state(VerilatedContext& ctx) {
   ctx.randSeed(static_cast<int>(n));
 }
 
+/// The clock cycles a trace keeps: SCW_FST_WINDOW=FROM:TO (the harness's own cycles, reset
+/// included), or every cycle when unset. A long run traced whole is gigabytes; a window around
+/// the cycle of interest is what one opens (scw soak writes one around its first divergence).
+struct TraceWindow {
+  std::uint64_t from = 0, to = ~std::uint64_t{0};
+  static TraceWindow from_env() {
+    TraceWindow w;
+    const char* v = std::getenv("SCW_FST_WINDOW");
+    if (v == nullptr || *v == '\0') return w;
+    char* mid = nullptr;
+    char* end = nullptr;
+    w.from = std::strtoull(v, &mid, 10);
+    if (mid == v || *mid != ':') bad(v);
+    w.to = std::strtoull(mid + 1, &end, 10);
+    if (end == mid + 1 || *end != '\0' || w.to < w.from) bad(v);
+    return w;
+  }
+  bool holds(std::uint64_t cycle) const { return cycle >= from && cycle <= to; }
+
+ private:
+  [[noreturn]] static void bad(const char* v) {
+    throw std::invalid_argument(std::string("SCW_FST_WINDOW='") + v +
+                                "' is not a cycle window: give FROM:TO, two whole numbers, FROM "
+                                "<= TO (unset: every cycle)");
+  }
+};
+
 /// Owns a VerilatedContext and one model `VM` with ports `clk_i` and `rst_ni`.
 /// Set the environment variable SCW_FST_DIR to a folder and every harness writes
-/// `<folder>/<name>.fst` (open it with GTKWave); unset, nothing is traced and nothing is paid.
+/// `<folder>/<name>.fst` (open it with GTKWave), only the cycles of SCW_FST_WINDOW when that is
+/// set; unset, nothing is traced and nothing is paid.
 template <typename VM>
 class Harness {
  public:
   explicit Harness(const std::string& name) : ctx_(std::make_unique<VerilatedContext>()) {
     const char* dir = std::getenv("SCW_FST_DIR");
     const bool tracing = kTraced && dir != nullptr && *dir != '\0';
-    if (tracing) ctx_->traceEverOn(true);
+    if (tracing) {
+      window_ = TraceWindow::from_env();
+      ctx_->traceEverOn(true);
+    }
     randomise_unreset_state(*ctx_);
     dut_ = std::make_unique<VM>(ctx_.get(), name.c_str());
     if constexpr (kTraced) {
@@ -113,7 +144,7 @@ class Harness {
  private:
   void dump() {
     if constexpr (kTraced) {
-      if (trace_) trace_->dump(ctx_->time());
+      if (trace_ && window_.holds(cycles_)) trace_->dump(ctx_->time());
     }
   }
 
@@ -122,6 +153,7 @@ class Harness {
   static constexpr bool kTraced = detail::has_trace<VM>::value;
   // Untraced models link no FST writer, so they hold no pointer to one either.
   std::conditional_t<kTraced, std::unique_ptr<VerilatedFstC>, std::unique_ptr<int>> trace_;
+  TraceWindow window_;
   std::uint64_t cycles_ = 0;
 };
 

@@ -48,16 +48,7 @@ scw::host::pipeline::SyntheticPair make_scene(int w, int h, std::uint32_t seed) 
 /// The settings of the small build's runs: opencv mode, disparities 0 .. 15, 2 x 2 tiles,
 /// objects of 20 px, a camera of f 100 px and b 0.2 m.
 scw::host::pipeline::StageOptions small_options() {
-  scw::host::pipeline::StageOptions o;
-  o.mode = scw::disparity::Mode::opencv;
-  o.dmin = 0;
-  o.num_disp = 16;
-  o.tiles_x = 2;
-  o.tiles_y = 2;
-  o.min_area = 20;
-  o.warning.focal_px = 100.0;
-  o.warning.baseline_m = 0.2;
-  return o;
+  return scw::host::pipeline::small_build_options();
 }
 
 /// A street for the road stage: a wall at disparity 2, a road rising 1 px every 2 rows from
@@ -271,12 +262,11 @@ TEST_CASE("20 frames under random input gaps and output backpressure: same resul
   SECTION("P = 2: the labelling stage's two lanes") { check_stalls<2>(); }
 }
 
-// [unwritten-ram]: left out of the X-randomised run (docs/rtl.md, "X and reset"). A frame cut
-// short right after reset makes the rectifier emit rows from raw-row RAM this frame never wrote:
-// the C++ model reads 0s there, the RTL whatever the RAM held, so the flagged frame's objects
-// (and their timing) differ under random RAM contents; the frame after it is exact either way.
+// Also under random RAM contents (x-seed1): the rows a frame cut short right after reset never
+// sent read 0 in the rectifier (its blank row slots), not whatever the RAM held, so the RTL and
+// the C++ model agree on the flagged frame too.
 TEST_CASE("broken input frames are flagged in their result, the next frame is right",
-          "[pipeline][rtl][unwritten-ram]") {
+          "[pipeline][rtl]") {
   constexpr int P = 1;
   using B = scw::hls::Beat<std::uint8_t, P>;
   const int w = 48, h = 24;
@@ -362,28 +352,10 @@ TEST_CASE("a Tsukuba crop: RTL chain = C++ chain = the floating-point chain's fr
   CHECK(cpp.results()[1] == cpp.results()[0]);  // the same pair twice: the same answer
 
   const auto ref = scw::host::pipeline::reference_frame(lc, rc, 9, opt);
-  const auto& got = cpp.results()[0].data.frame;
-  INFO("objects " << got.objects << " (reference " << ref.result.objects << "), severity "
-                  << static_cast<int>(got.severity));
   REQUIRE(ref.result.objects >= 2);
-  CHECK(got.objects == ref.result.objects);
-  CHECK(got.obstacles == ref.result.obstacles);
-  CHECK(static_cast<int>(got.severity) == static_cast<int>(ref.result.severity));
   REQUIRE(ref.result.index >= 0);
-  REQUIRE(got.index != 0xffff);
-  const double tol = scw::host::warning::distance_tolerance_m(
-      ref.result.deciding, scw::host::pipeline::warning_setup(lc.cols, lc.rows, opt));
-  CHECK(std::abs(got.distance_mm / 1000.0 - ref.result.deciding.distance_m) < tol);
-  // The stage lists objects by root node, the reference by first pixel: the same deciding
-  // object has the same closest point, disparity and box.
-  const auto& dec = ref.objects[static_cast<std::size_t>(ref.result.index)];
-  CHECK(got.closest_x == dec.closest_x);
-  CHECK(got.closest_y == dec.closest_y);
-  CHECK(got.d_max == dec.d_max);
-  CHECK(got.x_min == dec.x_min);
-  CHECK(got.x_max == dec.x_max);
-  CHECK(got.y_min == dec.y_min);
-  CHECK(got.y_max == dec.y_max);
+  CHECK(scw::host::pipeline::reference_mismatch(cpp.results()[0].data.frame, ref, lc.cols,
+                                                lc.rows, opt) == "");
 }
 
 TEST_CASE("a setup no stage can take is refused with the reason", "[pipeline]") {

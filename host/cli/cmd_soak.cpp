@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: Apache-2.0
+// `scw soak`: the small build's Verilated top against the C++ chain over many frames with broken
+// frames and random stalls, and reset in mid-frame (host/soak/); a JSON summary, progress on the
+// terminal, and the first divergence with an FST trace around it.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "host/cli/commands.hpp"
+#include "host/cli/value_checks.hpp"
+#include "host/io/image_file.hpp"
+#include "host/soak/reset_trials.hpp"
+#include "host/soak/soak.hpp"
+
+namespace scw::cli {
+namespace {
+
+struct Options {
+  std::string config = "small";
+  host::soak::SoakOptions soak;
+  int resets = 0;
+  std::string real_left = "data/tsukuba/scene1.row3.col3.ppm";
+  std::string real_right = "data/tsukuba/scene1.row3.col4.ppm";
+  std::string json;
+  bool no_stalls = false;
+};
+
+void say(const std::string& line) { std::cerr << line << "\n"; }
+
+void print(const host::soak::SoakSummary& s) {
+  std::cout << "soak: " << s.frames << " frames (" << s.malformed << " broken), " << s.results
+            << " results, " << s.cycles << " cycles: " << s.divergences << " divergences, "
+            << s.deadlocks << " deadlocks, " << s.flag_mismatches << " flag mismatches, "
+            << s.reference_mismatches << " of " << s.reference_checked
+            << " good frames off the floating-point reference (" << s.reference_boundary
+            << " more differ only at a decision boundary)\n";
+  if (s.first_divergence)
+    std::cout << "first divergence: result " << s.first_divergence->frame << " at cycle "
+              << s.first_divergence->cycle << ": " << s.first_divergence->what
+              << (s.first_divergence->fst.empty() ? "" : "\n  trace: " + s.first_divergence->fst)
+              << "\n";
+  if (!s.deadlock.empty()) std::cout << "stuck: " << s.deadlock << "\n";
+  if (!s.first_flag_mismatch.empty()) std::cout << "first flag mismatch: " << s.first_flag_mismatch << "\n";
+  if (!s.first_reference_boundary.empty())
+    std::cout << "first boundary case: " << s.first_reference_boundary << "\n";
+  if (!s.first_reference_mismatch.empty())
+    std::cout << "first reference mismatch: " << s.first_reference_mismatch << "\n";
+}
+
+/// Runs and prints; false when anything differed.
+bool run(Options& o) {
+  if (o.config != "small")
+    throw std::invalid_argument("--config " + o.config +
+                                ": the soak runs the small build (every block Verilated); give "
+                                "--config small");
+  auto& s = o.soak;
+  s.stalls = !o.no_stalls;
+  s.progress = say;
+  try {
+    s.real.left = host::io::read_grey_image(o.real_left);
+    s.real.right = host::io::read_grey_image(o.real_right);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(std::string(e.what()) +
+                                " (the pair the real crops come from: give --real-left and "
+                                "--real-right, or run from the repository's root)");
+  }
+  const auto summary = host::soak::run_soak(s);
+  print(summary);
+  nlohmann::json j = summary.to_json();
+  j["config"] = o.config;
+  j["seed"] = s.seed;
+  j["malformed_every"] = s.malformed_every;
+  j["size"] = {s.width, s.height};
+  bool ok = summary.passed();
+  if (o.resets > 0) {
+    host::soak::ResetOptions r;
+    r.trials = o.resets;
+    r.seed = s.seed;
+    r.width = s.width;
+    r.height = s.height;
+    r.stalls = s.stalls;
+    r.real = s.real;
+    r.progress = say;
+    const auto rs = host::soak::run_reset_trials(r);
+    std::cout << "resets: " << rs.trials << " in mid-frame, " << rs.failures << " failed"
+              << (rs.first_failure.empty() ? "" : ": first " + rs.first_failure) << "\n";
+    j["resets"] = rs.to_json();
+    ok = ok && rs.failures == 0;
+  }
+  if (!o.json.empty()) {
+    const auto dir = std::filesystem::path(o.json).parent_path();
+    std::error_code ec;
+    if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+    std::ofstream f(o.json);
+    if (!f) throw std::invalid_argument("--json " + o.json + ": cannot write there");
+    f << j.dump(2) << "\n";
+    std::cerr << "wrote " << o.json << "\n";
+  }
+  return ok;
+}
+
+}  // namespace
+
+void add_soak_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "soak", "Many frames through the Verilated pipeline against the C++ chain and the "
+              "floating-point reference, with broken frames, random stalls and resets in "
+              "mid-frame (docs/soak.md)");
+  auto& s = o->soak;
+  cmd->add_option("--config", o->config, "the build: small")->capture_default_str();
+  cmd->add_option("--frames", s.frames, "frames back to back")
+      ->capture_default_str()
+      ->check(positive("frames", "1000"));
+  cmd->add_option("--malformed-every", s.malformed_every,
+                  "a broken frame every K frames (short row, cut frame, sof mid-frame, stray "
+                  "beats in turn); 0: none")
+      ->capture_default_str()
+      ->check(non_negative("frames", "50"));
+  cmd->add_option("--seed", s.seed, "content, faults and stalls")->capture_default_str();
+  cmd->add_option("--resets", o->resets, "then this many resets at random cycles in mid-frame")
+      ->capture_default_str()
+      ->check(non_negative("resets", "200"));
+  cmd->add_flag("--no-stalls", o->no_stalls, "no input gaps or output backpressure");
+  cmd->add_option("--real-left", o->real_left, "the real pair the crops come from: left")
+      ->capture_default_str();
+  cmd->add_option("--real-right", o->real_right, "and right")->capture_default_str();
+  cmd->add_option("--fst", s.fst_dir,
+                  "on a divergence, write DIR/pipeline.fst: the top traced around it");
+  cmd->add_option("--inject-divergence", s.inject_divergence,
+                  "flip a bit of the RTL's result K, to see the checker report it (and trace it)");
+  cmd->add_option("--json", o->json, "write the summary as JSON");
+  cmd->callback([o] {
+    bool ok = false;
+    try {
+      ok = run(*o);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "scw soak: " << e.what() << "\n";
+      throw CLI::RuntimeError(2);
+    } catch (const std::runtime_error& e) {
+      std::cerr << "scw soak: " << e.what() << "\n";
+      throw CLI::RuntimeError(2);
+    }
+    if (!ok) throw CLI::RuntimeError(1);  // a divergence, deadlock or mismatch: printed above
+  });
+}
+
+}  // namespace scw::cli
