@@ -191,8 +191,6 @@ SoakSummary run_soak(const SoakOptions& o) {
   Chain cpp(setup, sim::PipelineEngines::all(sim::Engine::cpp), st.left, st.right, stalls, stalls);
   cpp.rect_left().record(true);
   cpp.rect_right().record(true);
-  cpp.disparity().record(true);
-  cpp.road().record(true);
   auto t = Clock::now();
   try {
     cpp.run(n, bound, [&](std::int64_t c, std::size_t r) { say(count_line("C++ chain", c, r, n)); });
