@@ -51,6 +51,32 @@ function(scw_verilate target)
     SOURCES ${sources}
     ${trace}
     VERILATOR_ARGS ${gargs} -O3 -Wno-fatal --x-assign unique --x-initial unique)
+  scw_verilated_unity(${target} ${ARG_PREFIX})
+endfunction()
+
+# scw_verilated_unity(<target> <prefix>): compiles one model's generated C++ as one translation
+# unit. Verilator writes a file per module class (about 160 for the small pipeline top), each
+# parsing the same Verilator headers: compiled one by one they took 146 s for that top, as one
+# unit 14 s (docs/performance.md, "Build time"). Verilator's own makefile does the same
+# (VM_PARALLEL_BUILDS=0, one __ALL.cpp), so the files are written to be combined; one group per
+# model keeps two models' files apart and lets models build in parallel.
+function(scw_verilated_unity target prefix)
+  get_target_property(binary_dir ${target} BINARY_DIR)
+  set(vdir "${binary_dir}/CMakeFiles/${target}.dir/${prefix}.dir/")
+  get_target_property(sources ${target} SOURCES)
+  set(generated "")
+  foreach(s IN LISTS sources)
+    string(FIND "${s}" "${vdir}" at)
+    if(at EQUAL 0 AND s MATCHES "\\.cpp$")
+      list(APPEND generated "${s}")
+    endif()
+  endforeach()
+  if(NOT generated)
+    message(FATAL_ERROR "scw_verilated_unity: no generated C++ for ${prefix} under ${vdir}")
+  endif()
+  set_source_files_properties(${generated} TARGET_DIRECTORY ${target}
+                              PROPERTIES UNITY_GROUP ${prefix})
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
 endfunction()
 
 # scw_rtl_model_library(<name>): a static library to scw_verilate() models into. Its Verilator

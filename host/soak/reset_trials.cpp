@@ -58,8 +58,7 @@ class Trial {
     std::advance(aim, static_cast<long>(static_cast<std::size_t>(t_) % by_activity.size()));
     const auto& cycles = aim->second;
     const std::int64_t at = cycles[std::uniform_int_distribution<std::size_t>(0, cycles.size() - 1)(rng_)];
-    // rst_ni held 2 .. 8 clocks: with 1, the second result after the reset leaves a clock late in
-    // most trials (docs/soak.md, "Reset"), so the top's reset needs two.
+    // rst_ni held 1 .. 8 clocks: one edge must reset everything that must be reset.
     const int hold = std::uniform_int_distribution<int>(kMinResetHold, 8)(rng_);
     Chain before(setup_, sim::PipelineEngines::all(sim::Engine::cpp), all.left, all.right,
                  stalls, stalls);

@@ -165,7 +165,7 @@ module scw_labelling #(
   phase_e phase_q, phase_d;
   logic [InitW-1:0] init_q;
   // frame position (of the next beat) and flags
-  logic in_frame_q, in_frame_d, in_frame;  // in_frame: in_frame_q's copy without reset
+  logic in_frame_q, in_frame_d, in_frame;  // in_frame: in_frame_q's twin, beside the phase flags
   logic [XW-1:0] x_q, x_d, lane_col_q, lane_col_d;
   logic [YW-1:0] y_q, y_d;
   logic [LaneSW-1:0] lane_q, lane_d;
@@ -199,17 +199,29 @@ module scw_labelling #(
   logic [OutW-1:0] out_data_q, out_data_d;
 
   // ---- phases ------------------------------------------------------------------------------
-  // One flag a phase, decoded from phase_d into registers without reset (reset holds phase_d at
-  // PhInit, so they equal phase_q's decode from the first clock): they steer the RAM ports and
-  // the lanes, and an asynchronous clear-to-output (891 ps) would stand in those paths' time.
+  // One flag a phase, decoded from phase_d into registers: they steer the RAM ports and the
+  // lanes, and an asynchronous clear-to-output (891 ps) would stand in those paths' time. Their
+  // reset is synchronous, to PhInit's decode: phase_d is the next phase of the state the reset
+  // cuts, so a decode of it on a single reset edge left the old phase's flags for one clock
+  // after (a reset held one clock lost a clock of Init and could run a clock of the cut phase:
+  // docs/soak.md, "Reset").
   logic ph_init, ph_frame, ph_pixels, ph_border, ph_resolve;
   always_ff @(posedge clk_i) begin
-    in_frame   <= in_frame_d;  // (reset holds in_frame_d at 0 too: no beat comes in PhInit)
-    ph_init    <= phase_d == PhInit;
-    ph_frame   <= phase_d == PhFrame;
-    ph_pixels  <= (phase_d == PhFrame) || (phase_d == PhDrain);
-    ph_border  <= phase_d == PhBorder;
-    ph_resolve <= phase_d == PhResolve;
+    if (!rst_ni) begin
+      in_frame   <= 1'b0;
+      ph_init    <= 1'b1;
+      ph_frame   <= 1'b0;
+      ph_pixels  <= 1'b0;
+      ph_border  <= 1'b0;
+      ph_resolve <= 1'b0;
+    end else begin
+      in_frame   <= in_frame_d;
+      ph_init    <= phase_d == PhInit;
+      ph_frame   <= phase_d == PhFrame;
+      ph_pixels  <= (phase_d == PhFrame) || (phase_d == PhDrain);
+      ph_border  <= phase_d == PhBorder;
+      ph_resolve <= phase_d == PhResolve;
+    end
   end
   logic drained;
 
