@@ -14,6 +14,7 @@ foreach(dir hls sim host)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/scw
           FILES_MATCHING PATTERN "*.hpp" PATTERN "*.def")
 endforeach()
+install(FILES ${PROJECT_BINARY_DIR}/generated/scw_pkg.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/scw)
 install(EXPORT scwTargets NAMESPACE scw:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/scw)
 
 # One file list per top: the package, the shared primitives, then the top's stage folders (or

@@ -370,15 +370,19 @@ using Rows = std::vector<std::vector<std::string>>;
 /// labels.png.
 std::vector<std::string> object_row(std::size_t frame, std::size_t line, std::uint16_t label,
                                     const Object& b) {
-  std::vector<std::string> r = {std::to_string(frame), std::to_string(line), std::to_string(label),
-                                std::to_string(b.area)};
-  for (std::uint16_t v : {b.x_min, b.x_max, b.y_min, b.y_max, b.d_min, b.d_max, b.closest_x,
-                          b.closest_y, b.first_x, b.first_y})
-    r.push_back(std::to_string(v));
-  for (std::uint64_t v :
-       {b.m10, b.m01, b.m20, b.m11, b.m02, b.m30, b.m21, b.m12, b.m03, b.sum_d, b.sum_dd})
-    r.push_back(std::to_string(v));
+  std::vector<std::string> r = {std::to_string(frame), std::to_string(line), std::to_string(label)};
+  sim::labelling_word::for_each(sim::labelling_word::kObjectFields, [&](const auto& f) {
+    r.push_back(std::to_string(b.*f.member));
+  });
   return r;
+}
+
+/// expected_objects.csv's columns: the row's place, then the object word's fields.
+std::vector<std::string> object_columns() {
+  std::vector<std::string> c = {"frame", "word", "label"};
+  sim::labelling_word::for_each(sim::labelling_word::kObjectFields,
+                                [&](const auto& f) { c.push_back(f.name); });
+  return c;
 }
 
 std::vector<std::string> status_row(std::size_t frame, std::size_t line, const FrameStatus& s) {
@@ -400,12 +404,7 @@ void write_files(const std::filesystem::path& dir, const Preset& p, const nlohma
   vw.add_hex("in.hex", "input", in_words, pixel_beat_layout(1, 16));
   vw.add_image("in.png", "input", stacked(images));
   vw.add_hex("expected.hex", "expected", out_words, labelling_word_layout());
-  vw.add_csv(
-      "expected_objects.csv", "expected",
-      {"frame", "word",      "label",     "area",    "x_min",   "x_max", "y_min", "y_max", "d_min",
-       "d_max", "closest_x", "closest_y", "first_x", "first_y", "m10",   "m01",   "m20",   "m11",
-       "m02",   "m30",       "m21",       "m12",     "m03",     "sum_d", "sum_dd"},
-      obj_rows);
+  vw.add_csv("expected_objects.csv", "expected", object_columns(), obj_rows);
   vw.add_csv("expected_status.csv", "expected",
              {"frame", "word", "objects", "tile_overflow", "object_overflow", "stream_error"},
              status_rows);
@@ -463,27 +462,17 @@ LabellingSetSummary write_labelling_set(const LabellingPreset& p,
 
 nlohmann::json labelling_word_layout() {
   nlohmann::json l = stream_beat_layout(Layout::kPayloadBits);
-  nlohmann::json obj = nlohmann::json::array();
-  obj.push_back({{"name", "is_status"}, {"lsb", 0}, {"bits", 1}});
-  obj.push_back({{"name", "area"}, {"lsb", 1}, {"bits", 32}});
-  int at = 33;
-  for (const char* n : {"x_min", "x_max", "y_min", "y_max", "d_min", "d_max", "closest_x",
-                        "closest_y", "first_x", "first_y"}) {
-    obj.push_back({{"name", n}, {"lsb", at}, {"bits", 16}});
-    at += 16;
-  }
-  for (const char* n :
-       {"m10", "m01", "m20", "m11", "m02", "m30", "m21", "m12", "m03", "sum_d", "sum_dd"}) {
-    obj.push_back({{"name", n}, {"lsb", at}, {"bits", 64}});
-    at += 64;
-  }
-  l["object_fields"] = obj;
-  l["status_fields"] =
-      nlohmann::json::array({{{"name", "is_status"}, {"lsb", 0}, {"bits", 1}},
-                             {{"name", "objects"}, {"lsb", 1}, {"bits", 32}},
-                             {{"name", "tile_overflow"}, {"lsb", 33}, {"bits", 1}},
-                             {{"name", "object_overflow"}, {"lsb", 34}, {"bits", 1}},
-                             {{"name", "stream_error"}, {"lsb", 35}, {"bits", 1}}});
+  auto fields = [](const auto& table) {
+    nlohmann::json v = nlohmann::json::array({{{"name", "is_status"}, {"lsb", 0}, {"bits", 1}}});
+    int at = 1;
+    sim::labelling_word::for_each(table, [&](const auto& f) {
+      v.push_back({{"name", f.name}, {"lsb", at}, {"bits", f.bits}});
+      at += f.bits;
+    });
+    return v;
+  };
+  l["object_fields"] = fields(sim::labelling_word::kObjectFields);
+  l["status_fields"] = fields(sim::labelling_word::kStatusFields);
   return l;
 }
 

@@ -11,38 +11,57 @@ package scw_pkg;
   // One disparity on the disparity, road and labelling streams: Q11.4 two's complement, invalid
   // = 0 or negative (hls::disparity::disp_t).
   localparam int unsigned DispBits /*verilator public*/ = 16;
-  // The words between the stages, as sim/ packs them (the one list of their widths in RTL):
-  // the labelling stage's object word, {is_status, label_desc_t} (sim/words/labelling_pack.hpp, 897),
-  // the warning stage's frame result (sim/words/warning_pack.hpp, 199) and the top's result word, the
-  // frame result and both cameras' input flags (sim/words/pipeline_pack.hpp). Verilator exports them
-  // (V<prefix>_scw_pkg), and sim/builds/pipeline_small_rtl.hpp checks them against the C++ packs.
-  localparam int unsigned ObjWordBits    /*verilator public*/ = 1 + 32 + 10 * 16 + 11 * 64;
+  // The labelling stage's object word, {label_desc_t, is_status} or {label_status_t, is_status}:
+  // the widths of its fields, here and nowhere else. The C++ reads these numbers from the header
+  // CMake writes from this file (cmake/ScwPkgHeader.cmake; sim/words/labelling_pack.hpp's field
+  // table), so a width changed here changes the RTL word, the C++ packing and the vector layouts.
+  // An object's pixel count, and a status word's object count in the same place:
+  localparam int unsigned AreaBits  /*verilator public*/ = 32;
+  // Positions and Q11.4 disparities (x_min .. first_y):
+  localparam int unsigned CoordBits /*verilator public*/ = 16;
+  // Moments and disparity sums (m10 .. sum_dd):
+  localparam int unsigned SumBits   /*verilator public*/ = 64;
+  // The words between the stages, as sim/ packs them: the labelling stage's object word (897 bits
+  // at the widths above), the warning stage's frame result (sim/words/warning_pack.hpp, 199) and
+  // the top's result word, the frame result and both cameras' input flags
+  // (sim/words/pipeline_pack.hpp). Verilator exports them (V<prefix>_scw_pkg), and
+  // sim/builds/pipeline_small_rtl.hpp checks them against the C++ packs.
+  localparam int unsigned ObjWordBits    /*verilator public*/ =
+      1 + AreaBits + 10 * CoordBits + 11 * SumBits;
   localparam int unsigned ResultWordBits /*verilator public*/ = 2 + 5 + 3 * 16 + 32 + 7 * 16;
   localparam int unsigned PipeResultBits /*verilator public*/ = ResultWordBits + 2;
   // One labelling object descriptor: the object word of sim/words/labelling_pack.hpp without its
-  // is_status bit, declared most significant first (area is bits [31:0], sum_dd the top 64 bits).
+  // is_status bit, declared most significant first (area the lowest bits, sum_dd the highest).
   typedef struct packed {
-    logic [63:0] sum_dd;
-    logic [63:0] sum_d;
-    logic [63:0] m03;
-    logic [63:0] m12;
-    logic [63:0] m21;
-    logic [63:0] m30;
-    logic [63:0] m02;
-    logic [63:0] m11;
-    logic [63:0] m20;
-    logic [63:0] m01;
-    logic [63:0] m10;
-    logic [15:0] first_y;
-    logic [15:0] first_x;
-    logic [15:0] closest_y;
-    logic [15:0] closest_x;
-    logic [15:0] d_max;
-    logic [15:0] d_min;
-    logic [15:0] y_max;
-    logic [15:0] y_min;
-    logic [15:0] x_max;
-    logic [15:0] x_min;
-    logic [31:0] area;
+    logic [SumBits-1:0] sum_dd;
+    logic [SumBits-1:0] sum_d;
+    logic [SumBits-1:0] m03;
+    logic [SumBits-1:0] m12;
+    logic [SumBits-1:0] m21;
+    logic [SumBits-1:0] m30;
+    logic [SumBits-1:0] m02;
+    logic [SumBits-1:0] m11;
+    logic [SumBits-1:0] m20;
+    logic [SumBits-1:0] m01;
+    logic [SumBits-1:0] m10;
+    logic [CoordBits-1:0] first_y;
+    logic [CoordBits-1:0] first_x;
+    logic [CoordBits-1:0] closest_y;
+    logic [CoordBits-1:0] closest_x;
+    logic [CoordBits-1:0] d_max;
+    logic [CoordBits-1:0] d_min;
+    logic [CoordBits-1:0] y_max;
+    logic [CoordBits-1:0] y_min;
+    logic [CoordBits-1:0] x_max;
+    logic [CoordBits-1:0] x_min;
+    logic [AreaBits-1:0] area;
   } label_desc_t;
+  // A frame's status word without its is_status bit (the rest of the word zero): the object
+  // count where an object's area is, then the flags.
+  typedef struct packed {
+    logic                stream_error;
+    logic                object_overflow;
+    logic                tile_overflow;
+    logic [AreaBits-1:0] objects;
+  } label_status_t;
 endpackage

@@ -995,34 +995,47 @@ module scw_labelling #(
     if (frame_last || sof_mid) phase_d = PhDrain;
   end
 
-  // The output word carries every field at full width (scw_pkg::label_desc_t).
+  // The output word carries every field at the package's widths (scw_pkg::label_desc_t, or
+  // scw_pkg::label_status_t in the status word): the sums are widened (or cut) to them.
+  localparam int unsigned AreaOutW  = scw_pkg::AreaBits;
+  localparam int unsigned CoordOutW = scw_pkg::CoordBits;
+  localparam int unsigned SumOutW   = scw_pkg::SumBits;
+  localparam int unsigned StatusW   = AreaOutW + 3;  // scw_pkg::label_status_t
+  scw_pkg::label_status_t out_status;
+  always_comb begin
+    out_status                 = '0;
+    out_status.objects         = AreaOutW'(emitted_q);
+    out_status.tile_overflow   = emit_tile_ovf_q;
+    out_status.object_overflow = obj_ovf_q;
+    out_status.stream_error    = emit_err_q;
+  end
   scw_pkg::label_desc_t out_desc;
   always_comb begin
     int unsigned at;
     out_desc = '0;
     at = 0;
-    out_desc.area      = 32'(acc_rd[at +: AreaW]);  at = at + AreaW;
-    out_desc.x_min     = 16'(acc_rd[at +: PosXW]);  at = at + PosXW;
-    out_desc.x_max     = 16'(acc_rd[at +: PosXW]);  at = at + PosXW;
-    out_desc.y_min     = 16'(acc_rd[at +: PosYW]);  at = at + PosYW;
-    out_desc.y_max     = 16'(acc_rd[at +: PosYW]);  at = at + PosYW;
-    out_desc.d_min     = 16'(acc_rd[at +: DispW]);  at = at + DispW;
-    out_desc.d_max     = 16'(acc_rd[at +: DispW]);  at = at + DispW;
-    out_desc.closest_x = 16'(acc_rd[at +: PosXW]);  at = at + PosXW;
-    out_desc.closest_y = 16'(acc_rd[at +: PosYW]);  at = at + PosYW;
-    out_desc.first_x   = 16'(acc_rd[at +: PosXW]);  at = at + PosXW;
-    out_desc.first_y   = 16'(acc_rd[at +: PosYW]);  at = at + PosYW;
-    out_desc.m10       = 64'(acc_rd[at +: M10W]);   at = at + M10W;
-    out_desc.m01       = 64'(acc_rd[at +: M01W]);   at = at + M01W;
-    out_desc.m20       = 64'(acc_rd[at +: M20W]);   at = at + M20W;
-    out_desc.m11       = 64'(acc_rd[at +: M11W]);   at = at + M11W;
-    out_desc.m02       = 64'(acc_rd[at +: M02W]);   at = at + M02W;
-    out_desc.m30       = 64'(acc_rd[at +: M30W]);   at = at + M30W;
-    out_desc.m21       = 64'(acc_rd[at +: M21W]);   at = at + M21W;
-    out_desc.m12       = 64'(acc_rd[at +: M12W]);   at = at + M12W;
-    out_desc.m03       = 64'(acc_rd[at +: M03W]);   at = at + M03W;
-    out_desc.sum_d     = 64'(acc_rd[at +: SumDW]);  at = at + SumDW;
-    out_desc.sum_dd    = 64'(acc_rd[at +: SumDDW]);
+    out_desc.area      = AreaOutW'(acc_rd[at +: AreaW]);  at = at + AreaW;
+    out_desc.x_min     = CoordOutW'(acc_rd[at +: PosXW]);  at = at + PosXW;
+    out_desc.x_max     = CoordOutW'(acc_rd[at +: PosXW]);  at = at + PosXW;
+    out_desc.y_min     = CoordOutW'(acc_rd[at +: PosYW]);  at = at + PosYW;
+    out_desc.y_max     = CoordOutW'(acc_rd[at +: PosYW]);  at = at + PosYW;
+    out_desc.d_min     = CoordOutW'(acc_rd[at +: DispW]);  at = at + DispW;
+    out_desc.d_max     = CoordOutW'(acc_rd[at +: DispW]);  at = at + DispW;
+    out_desc.closest_x = CoordOutW'(acc_rd[at +: PosXW]);  at = at + PosXW;
+    out_desc.closest_y = CoordOutW'(acc_rd[at +: PosYW]);  at = at + PosYW;
+    out_desc.first_x   = CoordOutW'(acc_rd[at +: PosXW]);  at = at + PosXW;
+    out_desc.first_y   = CoordOutW'(acc_rd[at +: PosYW]);  at = at + PosYW;
+    out_desc.m10       = SumOutW'(acc_rd[at +: M10W]);   at = at + M10W;
+    out_desc.m01       = SumOutW'(acc_rd[at +: M01W]);   at = at + M01W;
+    out_desc.m20       = SumOutW'(acc_rd[at +: M20W]);   at = at + M20W;
+    out_desc.m11       = SumOutW'(acc_rd[at +: M11W]);   at = at + M11W;
+    out_desc.m02       = SumOutW'(acc_rd[at +: M02W]);   at = at + M02W;
+    out_desc.m30       = SumOutW'(acc_rd[at +: M30W]);   at = at + M30W;
+    out_desc.m21       = SumOutW'(acc_rd[at +: M21W]);   at = at + M21W;
+    out_desc.m12       = SumOutW'(acc_rd[at +: M12W]);   at = at + M12W;
+    out_desc.m03       = SumOutW'(acc_rd[at +: M03W]);   at = at + M03W;
+    out_desc.sum_d     = SumOutW'(acc_rd[at +: SumDW]);  at = at + SumDW;
+    out_desc.sum_dd    = SumOutW'(acc_rd[at +: SumDDW]);
   end
 
   // The output register: an object's sum, or the status word (sim/words/labelling_pack.hpp).
@@ -1034,10 +1047,7 @@ module scw_labelling #(
     if (emit_status) begin
       out_data_d = '0;
       out_data_d[0] = 1'b1;
-      out_data_d[32:1] = 32'(emitted_q);
-      out_data_d[33] = emit_tile_ovf_q;
-      out_data_d[34] = obj_ovf_q;
-      out_data_d[35] = emit_err_q;
+      out_data_d[StatusW:1] = out_status;
     end
     if (out_load) out_valid_d = 1'b1;
   end

@@ -104,17 +104,20 @@ module scw_warning #(
   assign road_w = need_road ? {road_b_i, road_a_i} : road_q;
 
   // ---- input word ---------------------------------------------------------------------------
+  localparam int unsigned StatusW = scw_pkg::AreaBits + 3;  // scw_pkg::label_status_t
   scw_pkg::label_desc_t desc;
+  scw_pkg::label_status_t st;
   logic in_status;
   assign in_status = in_data_i[0];
   assign desc = in_data_i[InW-1:1];
+  assign st   = in_data_i[StatusW:1];
 
   // Fields in result order (closest_x lowest); a status word puts {flags, objects} there.
   logic [FW-1:0] fields;
   assign fields = in_status
-      ? {{(FW - 35){1'b0}}, desc.x_min[2:0], desc.area}  // stream_error, object_, tile_overflow
-      : {desc.y_max, desc.y_min, desc.x_max, desc.x_min, desc.d_max, desc.closest_y,
-         desc.closest_x};
+      ? FW'({st.stream_error, st.object_overflow, st.tile_overflow, 32'(st.objects)})
+      : {16'(desc.y_max), 16'(desc.y_min), 16'(desc.x_max), 16'(desc.x_min), 16'(desc.d_max),
+         16'(desc.closest_y), 16'(desc.closest_x)};
 
   logic [15:0] d_limit_q;
   always_ff @(posedge clk_i) d_limit_q <= cfg_d_limit_q4_i;
@@ -126,7 +129,7 @@ module scw_warning #(
     .en_i        (en),
     .cfg_rule_i,
     .cfg_spread_i,
-    .area_i      (desc.area[19:0]),
+    .area_i      (20'(desc.area)),
     .sum_d_i     (desc.sum_d[34:0]),
     .sum_dd_i    (desc.sum_dd[49:0]),
     .d_max_i     (desc.d_max),
@@ -326,5 +329,5 @@ module scw_warning #(
   logic unused_in;
   assign unused_in = ^{desc.m03, desc.m12, desc.m21, desc.m30, desc.m02, desc.m11, desc.m20,
                        desc.m01, desc.m10, desc.first_y, desc.first_x, desc.d_min,
-                       desc.area[31:20], desc.sum_d[63:35], desc.sum_dd[63:50]};
+                       desc.area, desc.sum_d[63:35], desc.sum_dd[63:50]};
 endmodule

@@ -1,50 +1,117 @@
 // SPDX-License-Identifier: Apache-2.0
 // The labelling stage's output word, {last, payload}: what the RTL's out_data_o carries and the
-// golden vectors store.
+// golden vectors store. Its fields are listed once, in kObjectFields and kStatusFields, with
+// the widths of rtl_models/common/scw_pkg.sv (scw_pkg.hpp is generated from it): packing,
+// unpacking, the vector sets' layout JSON and their CSV columns all walk these tables.
 #pragma once
 
 #include <cstdint>
+#include <tuple>
+#include <type_traits>
 
 #include "hls/labelling/labelling_params.hpp"
+#include "scw_pkg.hpp"
 #include "sim/words/pack.hpp"
+
+namespace scw::sim::labelling_word {
+
+using hls::labelling::FrameStatus;
+using hls::labelling::Object;
+
+/// One field of a word: its name in vectors and CSV, its width, and where the C++ keeps it.
+template <typename S, typename T>
+struct Field {
+  const char* name;
+  int bits;
+  T S::*member;
+  static constexpr int kTypeBits = std::is_same_v<T, bool> ? 1 : static_cast<int>(8 * sizeof(T));
+};
+
+/// An object word after its is_status bit, least significant first: scw_pkg's label_desc_t
+/// read from its last member up.
+inline constexpr auto kObjectFields = std::make_tuple(
+    Field<Object, std::uint32_t>{"area", pkg::AreaBits, &Object::area},
+    Field<Object, std::uint16_t>{"x_min", pkg::CoordBits, &Object::x_min},
+    Field<Object, std::uint16_t>{"x_max", pkg::CoordBits, &Object::x_max},
+    Field<Object, std::uint16_t>{"y_min", pkg::CoordBits, &Object::y_min},
+    Field<Object, std::uint16_t>{"y_max", pkg::CoordBits, &Object::y_max},
+    Field<Object, std::uint16_t>{"d_min", pkg::CoordBits, &Object::d_min},
+    Field<Object, std::uint16_t>{"d_max", pkg::CoordBits, &Object::d_max},
+    Field<Object, std::uint16_t>{"closest_x", pkg::CoordBits, &Object::closest_x},
+    Field<Object, std::uint16_t>{"closest_y", pkg::CoordBits, &Object::closest_y},
+    Field<Object, std::uint16_t>{"first_x", pkg::CoordBits, &Object::first_x},
+    Field<Object, std::uint16_t>{"first_y", pkg::CoordBits, &Object::first_y},
+    Field<Object, std::uint64_t>{"m10", pkg::SumBits, &Object::m10},
+    Field<Object, std::uint64_t>{"m01", pkg::SumBits, &Object::m01},
+    Field<Object, std::uint64_t>{"m20", pkg::SumBits, &Object::m20},
+    Field<Object, std::uint64_t>{"m11", pkg::SumBits, &Object::m11},
+    Field<Object, std::uint64_t>{"m02", pkg::SumBits, &Object::m02},
+    Field<Object, std::uint64_t>{"m30", pkg::SumBits, &Object::m30},
+    Field<Object, std::uint64_t>{"m21", pkg::SumBits, &Object::m21},
+    Field<Object, std::uint64_t>{"m12", pkg::SumBits, &Object::m12},
+    Field<Object, std::uint64_t>{"m03", pkg::SumBits, &Object::m03},
+    Field<Object, std::uint64_t>{"sum_d", pkg::SumBits, &Object::sum_d},
+    Field<Object, std::uint64_t>{"sum_dd", pkg::SumBits, &Object::sum_dd});
+
+/// A status word after its is_status bit: the object count in the area field's place, the
+/// flags just above it (scw_pkg's label_status_t).
+inline constexpr auto kStatusFields = std::make_tuple(
+    Field<FrameStatus, std::uint32_t>{"objects", pkg::AreaBits, &FrameStatus::objects},
+    Field<FrameStatus, bool>{"tile_overflow", 1, &FrameStatus::tile_overflow},
+    Field<FrameStatus, bool>{"object_overflow", 1, &FrameStatus::object_overflow},
+    Field<FrameStatus, bool>{"stream_error", 1, &FrameStatus::stream_error});
+
+/// Calls f(field) for each field of a table, in order.
+template <typename Table, typename F>
+constexpr void for_each(const Table& t, F&& f) {
+  std::apply([&](const auto&... x) { (f(x), ...); }, t);
+}
+
+template <typename Table>
+constexpr int bits_of(const Table& t) {
+  int n = 0;
+  for_each(t, [&](const auto& x) { n += x.bits; });
+  return n;
+}
+
+/// Every field's width fits the C++ member that holds it.
+template <typename Table>
+constexpr bool fits_types(const Table& t) {
+  bool ok = true;
+  for_each(t, [&](const auto& x) { ok = ok && x.bits >= 1 && x.bits <= x.kTypeBits; });
+  return ok;
+}
+
+inline constexpr int kPayloadBits = 1 + bits_of(kObjectFields);
+static_assert(1 + bits_of(kStatusFields) <= kPayloadBits, "a status word fits an object word");
+static_assert(fits_types(kObjectFields) && fits_types(kStatusFields),
+              "scw_pkg.sv's widths fit the C++ fields (hls/labelling/labelling_params.hpp)");
+
+}  // namespace scw::sim::labelling_word
 
 namespace scw::sim {
 
-/// Payload, least significant first: is_status (1 bit), then for an object area (32), x_min,
-/// x_max, y_min, y_max, d_min, d_max, closest_x, closest_y, first_x, first_y (16 each),
-/// m10, m01, m20, m11, m02, m30, m21, m12, m03, sum_d, sum_dd (64 each); for the status word
-/// objects (32),
-/// tile_overflow, object_overflow, stream_error (1 each), the rest zero.
 template <>
 struct BeatLayout<hls::Packet<hls::labelling::LabelWord>> {
   using beat_t = hls::Packet<hls::labelling::LabelWord>;
-  static constexpr int kPayloadBits = 1 + 32 + 10 * 16 + 11 * 64;  // 897
+  static constexpr int kPayloadBits = labelling_word::kPayloadBits;
   static constexpr int kBits = kPayloadBits + 1;
 
   static Bits payload(const beat_t& b) {
     Bits w(kPayloadBits);
     const auto& d = b.data;
     w.set(0, 1, d.is_status);
-    if (d.is_status) {
-      w.set(1, 32, d.status.objects);
-      w.set(33, 1, d.status.tile_overflow);
-      w.set(34, 1, d.status.object_overflow);
-      w.set(35, 1, d.status.stream_error);
-      return w;
-    }
-    const auto& o = d.object;
-    w.set(1, 32, o.area);
-    int at = 33;
-    for (std::uint16_t v : {o.x_min, o.x_max, o.y_min, o.y_max, o.d_min, o.d_max, o.closest_x,
-                            o.closest_y, o.first_x, o.first_y}) {
-      w.set(at, 16, v);
-      at += 16;
-    }
-    for (std::uint64_t v :
-         {o.m10, o.m01, o.m20, o.m11, o.m02, o.m30, o.m21, o.m12, o.m03, o.sum_d, o.sum_dd}) {
-      w.set(at, 64, v);
-      at += 64;
-    }
+    int at = 1;
+    auto put = [&](const auto& s) {
+      return [&](const auto& f) {
+        w.set(at, f.bits, static_cast<std::uint64_t>(s.*f.member));
+        at += f.bits;
+      };
+    };
+    if (d.is_status)
+      labelling_word::for_each(labelling_word::kStatusFields, put(d.status));
+    else
+      labelling_word::for_each(labelling_word::kObjectFields, put(d.object));
     return w;
   }
   static beat_t from_payload(const Bits& w, bool last) {
@@ -52,26 +119,18 @@ struct BeatLayout<hls::Packet<hls::labelling::LabelWord>> {
     b.last = last;
     auto& d = b.data;
     d.is_status = w.get(0, 1) != 0;
-    if (d.is_status) {
-      d.status.objects = static_cast<std::uint32_t>(w.get(1, 32));
-      d.status.tile_overflow = w.get(33, 1) != 0;
-      d.status.object_overflow = w.get(34, 1) != 0;
-      d.status.stream_error = w.get(35, 1) != 0;
-      return b;
-    }
-    auto& o = d.object;
-    o.area = static_cast<std::uint32_t>(w.get(1, 32));
-    int at = 33;
-    for (std::uint16_t* v : {&o.x_min, &o.x_max, &o.y_min, &o.y_max, &o.d_min, &o.d_max,
-                             &o.closest_x, &o.closest_y, &o.first_x, &o.first_y}) {
-      *v = static_cast<std::uint16_t>(w.get(at, 16));
-      at += 16;
-    }
-    for (std::uint64_t* v : {&o.m10, &o.m01, &o.m20, &o.m11, &o.m02, &o.m30, &o.m21, &o.m12,
-                             &o.m03, &o.sum_d, &o.sum_dd}) {
-      *v = w.get(at, 64);
-      at += 64;
-    }
+    int at = 1;
+    auto get = [&](auto& s) {
+      return [&](const auto& f) {
+        using T = std::remove_reference_t<decltype(s.*f.member)>;
+        s.*f.member = static_cast<T>(w.get(at, f.bits));
+        at += f.bits;
+      };
+    };
+    if (d.is_status)
+      labelling_word::for_each(labelling_word::kStatusFields, get(d.status));
+    else
+      labelling_word::for_each(labelling_word::kObjectFields, get(d.object));
     return b;
   }
 };
