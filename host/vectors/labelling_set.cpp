@@ -371,27 +371,17 @@ using Rows = std::vector<std::vector<std::string>>;
 std::vector<std::string> object_row(std::size_t frame, std::size_t line, std::uint16_t label,
                                     const Object& b) {
   std::vector<std::string> r = {std::to_string(frame), std::to_string(line), std::to_string(label)};
-  sim::labelling_word::for_each(sim::labelling_word::kObjectFields, [&](const auto& f) {
-    r.push_back(std::to_string(b.*f.member));
-  });
+  sim::labelling_word::for_each(sim::labelling_word::kObjectFields,
+                                [&](const auto& f) { r.push_back(std::to_string(b.*f.member)); });
   return r;
 }
 
-/// expected_objects.csv's columns: the row's place, then the object word's fields.
-std::vector<std::string> object_columns() {
-  std::vector<std::string> c = {"frame", "word", "label"};
-  sim::labelling_word::for_each(sim::labelling_word::kObjectFields,
-                                [&](const auto& f) { c.push_back(f.name); });
-  return c;
-}
-
+/// One expected_status.csv row: the frame, its status word's line in expected.hex, its fields.
 std::vector<std::string> status_row(std::size_t frame, std::size_t line, const FrameStatus& s) {
-  return {std::to_string(frame),
-          std::to_string(line),
-          std::to_string(s.objects),
-          std::to_string(s.tile_overflow ? 1 : 0),
-          std::to_string(s.object_overflow ? 1 : 0),
-          std::to_string(s.stream_error ? 1 : 0)};
+  std::vector<std::string> r = {std::to_string(frame), std::to_string(line)};
+  sim::labelling_word::for_each(sim::labelling_word::kStatusFields,
+                                [&](const auto& f) { r.push_back(std::to_string(s.*f.member)); });
+  return r;
 }
 
 void write_files(const std::filesystem::path& dir, const Preset& p, const nlohmann::json& config,
@@ -404,10 +394,12 @@ void write_files(const std::filesystem::path& dir, const Preset& p, const nlohma
   vw.add_hex("in.hex", "input", in_words, pixel_beat_layout(1, 16));
   vw.add_image("in.png", "input", stacked(images));
   vw.add_hex("expected.hex", "expected", out_words, labelling_word_layout());
-  vw.add_csv("expected_objects.csv", "expected", object_columns(), obj_rows);
+  using sim::words::column_names;
+  vw.add_csv("expected_objects.csv", "expected",
+             column_names({"frame", "word", "label"}, sim::labelling_word::kObjectFields),
+             obj_rows);
   vw.add_csv("expected_status.csv", "expected",
-             {"frame", "word", "objects", "tile_overflow", "object_overflow", "stream_error"},
-             status_rows);
+             column_names({"frame", "word"}, sim::labelling_word::kStatusFields), status_rows);
   vw.add_image("labels.png", "expected", stacked(label_images));
   vw.finish();
 }

@@ -324,21 +324,12 @@ nlohmann::json out_layout() {
   nlohmann::json l = stream_beat_layout(OutLayout::kPayloadBits);
   nlohmann::json f = nlohmann::json::array();
   int at = 0;
-  auto add = [&](const char* n, int bits, bool is_signed = false) {
-    nlohmann::json e = {{"name", n}, {"lsb", at}, {"bits", bits}};
-    if (is_signed) e["signed"] = true;
+  sim::words::for_each(sim::warning_word::kResultFields, [&](const auto& x) {
+    nlohmann::json e = {{"name", x.name}, {"lsb", at}, {"bits", x.bits}};
+    if (x.kSigned) e["signed"] = true;
     f.push_back(std::move(e));
-    at += bits;
-  };
-  add("severity", 2);
-  for (const char* n :
-       {"in_tunnel", "too_close", "tile_overflow", "object_overflow", "stream_error"})
-    add(n, 1);
-  for (const char* n : {"objects", "obstacles", "index"}) add(n, 16);
-  add("distance_mm", 32, true);
-  for (const char* n : {"closest_x", "closest_y", "d_max", "x_min", "x_max", "y_min", "y_max"})
-    add(n, 16);
-  if (at != OutLayout::kPayloadBits) throw std::logic_error("vectors warning: result layout");
+    at += x.bits;
+  });
   l["result_fields"] = f;
   l["severity_codes"] = {{"none", 0}, {"low", 1}, {"medium", 2}, {"high", 3}};
   return l;
@@ -464,27 +455,19 @@ std::vector<std::string> eval_row(std::size_t frame, std::size_t line, std::size
           severity_name(e.severity)};
 }
 
+std::string cell(bool v) { return b01(v); }
+std::string cell(hls::warning::Severity v) { return severity_name(v); }
+template <typename T>
+std::string cell(T v) {
+  return std::to_string(v);
+}
+
 /// One expected.csv row: a frame's result and the input line that closed the frame.
 std::vector<std::string> result_row(std::size_t frame, std::size_t closing, const FrameResult& r) {
-  return {std::to_string(frame),
-          std::to_string(closing),
-          severity_name(r.severity),
-          b01(r.in_tunnel),
-          b01(r.too_close),
-          b01(r.tile_overflow),
-          b01(r.object_overflow),
-          b01(r.stream_error),
-          std::to_string(r.objects),
-          std::to_string(r.obstacles),
-          std::to_string(r.index),
-          std::to_string(r.distance_mm),
-          std::to_string(r.closest_x),
-          std::to_string(r.closest_y),
-          std::to_string(r.d_max),
-          std::to_string(r.x_min),
-          std::to_string(r.x_max),
-          std::to_string(r.y_min),
-          std::to_string(r.y_max)};
+  std::vector<std::string> row = {std::to_string(frame), std::to_string(closing)};
+  sim::words::for_each(sim::warning_word::kResultFields,
+                       [&](const auto& f) { row.push_back(cell(r.*f.member)); });
+  return row;
 }
 
 void write_files(const std::filesystem::path& dir, const Preset& p, const nlohmann::json& config,
@@ -501,9 +484,7 @@ void write_files(const std::filesystem::path& dir, const Preset& p, const nlohma
              word_rows);
   vw.add_hex("expected.hex", "expected", out_bits, out_layout());
   vw.add_csv("expected.csv", "expected",
-             {"frame", "closing_word", "severity", "in_tunnel", "too_close", "tile_overflow",
-              "object_overflow", "stream_error", "objects", "obstacles", "index", "distance_mm",
-              "closest_x", "closest_y", "d_max", "x_min", "x_max", "y_min", "y_max"},
+             sim::words::column_names({"frame", "closing_word"}, sim::warning_word::kResultFields),
              result_rows);
   vw.add_csv(
       "expected_objects.csv", "expected",

@@ -7,10 +7,10 @@
 
 #include <cstdint>
 #include <tuple>
-#include <type_traits>
 
 #include "hls/labelling/labelling_params.hpp"
 #include "scw_pkg.hpp"
+#include "sim/words/fields.hpp"
 #include "sim/words/pack.hpp"
 
 namespace scw::sim::labelling_word {
@@ -18,14 +18,8 @@ namespace scw::sim::labelling_word {
 using hls::labelling::FrameStatus;
 using hls::labelling::Object;
 
-/// One field of a word: its name in vectors and CSV, its width, and where the C++ keeps it.
-template <typename S, typename T>
-struct Field {
-  const char* name;
-  int bits;
-  T S::*member;
-  static constexpr int kTypeBits = std::is_same_v<T, bool> ? 1 : static_cast<int>(8 * sizeof(T));
-};
+using words::Field;
+using words::for_each;
 
 /// An object word after its is_status bit, least significant first: scw_pkg's label_desc_t
 /// read from its last member up.
@@ -61,30 +55,10 @@ inline constexpr auto kStatusFields = std::make_tuple(
     Field<FrameStatus, bool>{"object_overflow", 1, &FrameStatus::object_overflow},
     Field<FrameStatus, bool>{"stream_error", 1, &FrameStatus::stream_error});
 
-/// Calls f(field) for each field of a table, in order.
-template <typename Table, typename F>
-constexpr void for_each(const Table& t, F&& f) {
-  std::apply([&](const auto&... x) { (f(x), ...); }, t);
-}
-
-template <typename Table>
-constexpr int bits_of(const Table& t) {
-  int n = 0;
-  for_each(t, [&](const auto& x) { n += x.bits; });
-  return n;
-}
-
-/// Every field's width fits the C++ member that holds it.
-template <typename Table>
-constexpr bool fits_types(const Table& t) {
-  bool ok = true;
-  for_each(t, [&](const auto& x) { ok = ok && x.bits >= 1 && x.bits <= x.kTypeBits; });
-  return ok;
-}
-
-inline constexpr int kPayloadBits = 1 + bits_of(kObjectFields);
-static_assert(1 + bits_of(kStatusFields) <= kPayloadBits, "a status word fits an object word");
-static_assert(fits_types(kObjectFields) && fits_types(kStatusFields),
+inline constexpr int kPayloadBits = 1 + words::bits_of(kObjectFields);
+static_assert(1 + words::bits_of(kStatusFields) <= kPayloadBits,
+              "a status word fits an object word");
+static_assert(words::fits_types(kObjectFields) && words::fits_types(kStatusFields),
               "scw_pkg.sv's widths fit the C++ fields (hls/labelling/labelling_params.hpp)");
 
 }  // namespace scw::sim::labelling_word
@@ -101,17 +75,10 @@ struct BeatLayout<hls::Packet<hls::labelling::LabelWord>> {
     Bits w(kPayloadBits);
     const auto& d = b.data;
     w.set(0, 1, d.is_status);
-    int at = 1;
-    auto put = [&](const auto& s) {
-      return [&](const auto& f) {
-        w.set(at, f.bits, static_cast<std::uint64_t>(s.*f.member));
-        at += f.bits;
-      };
-    };
     if (d.is_status)
-      labelling_word::for_each(labelling_word::kStatusFields, put(d.status));
+      words::pack_fields(w, 1, d.status, labelling_word::kStatusFields);
     else
-      labelling_word::for_each(labelling_word::kObjectFields, put(d.object));
+      words::pack_fields(w, 1, d.object, labelling_word::kObjectFields);
     return w;
   }
   static beat_t from_payload(const Bits& w, bool last) {
@@ -119,18 +86,10 @@ struct BeatLayout<hls::Packet<hls::labelling::LabelWord>> {
     b.last = last;
     auto& d = b.data;
     d.is_status = w.get(0, 1) != 0;
-    int at = 1;
-    auto get = [&](auto& s) {
-      return [&](const auto& f) {
-        using T = std::remove_reference_t<decltype(s.*f.member)>;
-        s.*f.member = static_cast<T>(w.get(at, f.bits));
-        at += f.bits;
-      };
-    };
     if (d.is_status)
-      labelling_word::for_each(labelling_word::kStatusFields, get(d.status));
+      words::unpack_fields(w, 1, d.status, labelling_word::kStatusFields);
     else
-      labelling_word::for_each(labelling_word::kObjectFields, get(d.object));
+      words::unpack_fields(w, 1, d.object, labelling_word::kObjectFields);
     return b;
   }
 };
