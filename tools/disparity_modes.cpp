@@ -2,7 +2,7 @@
 // Bad pixels of thesis mode, opencv mode (the disparity stage's model) and cv::StereoBM on pairs
 // with a dense ground truth: what chose the commands' default mode (docs/disparity.md).
 //
-//   disparity_modes [--aloe DIR] [--scenes FRAMES] [--windows N,N,...]
+//   disparity_modes [--aloe DIR] [--scenes FRAMES] [--windows N,N,...] [--edge K,K,...]
 //
 // Always Tsukuba (SCW_DATA_DIR/tsukuba, d 0..15). --aloe DIR: Middlebury 2006 Aloe from DIR
 // (aloeL.jpg, aloeR.jpg, aloeGT.png), halved to 641 x 555 so its 43..211 px fit d 0..127.
@@ -10,6 +10,8 @@
 // raw, rectified with cv::remap through the rig's calibration, d 0..127 (`scw run`'s range);
 // the truth of each rectified left pixel is f b / Z of the surface its ray hits (sky: unknown).
 // Every image is read with host::io::read_grey_image (cv::IMREAD_GRAYSCALE), the CLI's reader.
+// --edge K,...: opencv mode with edge_candidates = K, scored in the left edge band alone (the
+// columns left of the valid region, where cv::StereoBM has no output), beside the valid region.
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -58,11 +60,15 @@ struct Score {
   }
 };
 
-Score score(const cv::Mat& d16, bool rejects, std::int16_t invalid, const Pair& p, int n) {
+/// Over columns u_begin .. u_end - 1 (default: the valid region's).
+Score score(const cv::Mat& d16, bool rejects, std::int16_t invalid, const Pair& p, int n,
+            int u_begin = -1, int u_end = -1) {
   const int r = n / 2;
+  if (u_begin < 0) u_begin = r + std::max(p.dmax, 0);
+  if (u_end < 0) u_end = p.left.cols - r;
   Score s;
   for (int v = r; v < p.left.rows - r; ++v)
-    for (int u = r + std::max(p.dmax, 0); u < p.left.cols - r; ++u) {
+    for (int u = u_begin; u < u_end; ++u) {
       const float t = p.truth.at<float>(v, u);
       if (std::isnan(t)) continue;
       ++s.pixels;
@@ -165,6 +171,22 @@ std::vector<Pair> scenes(const std::string& preset, int frames, bool markings) {
   return out;
 }
 
+/// opencv mode with edge_candidates = k: {the band r + dmin .. r + dmax - 1, the valid region}.
+std::array<Score, 2> score_edge(const Pair& p, int n, int k) {
+  auto oc = disparity::mode_config(disparity::Mode::opencv, p.left.cols, p.left.rows, p.dmin);
+  oc.edge_candidates = k;
+  const cv::Mat d = disparity::disparity_image(p.left, p.right, n, p.dmin, p.dmax, oc);
+  const auto inv = static_cast<std::int16_t>(hls::disparity::invalid_code(oc));
+  const int r = n / 2;
+  return {score(d, true, inv, p, n, r + p.dmin, r + p.dmax), score(d, true, inv, p, n)};
+}
+
+void print_edge_row(const std::string& what, int n, int k, const std::array<Score, 2>& s) {
+  std::printf("  %-34s %3d %4d %7ld   %6.2f %% (%5.1f, %5.2f)   %6.2f %% (%5.1f, %5.2f)\n",
+              what.c_str(), n, k, s[0].pixels, s[0].bad(), s[0].density(), s[0].bad_of_valid(),
+              s[1].bad(), s[1].density(), s[1].bad_of_valid());
+}
+
 void print_row(const std::string& what, int n, const std::array<Score, 3>& s) {
   std::printf("  %-34s %3d %8ld", what.c_str(), n, s[0].pixels);
   for (const Score& x : s)
@@ -177,7 +199,13 @@ void print_row(const std::string& what, int n, const std::array<Score, 3>& s) {
 int main(int argc, char** argv) {
   std::string aloe_dir;
   int scene_frames = 0;
-  std::vector<int> windows{5, 9, 15, 21};
+  std::vector<int> windows{5, 9, 15, 21}, edges;
+  const auto list = [](const char* arg) {
+    std::vector<int> v;
+    std::stringstream ss(arg);
+    for (std::string w; std::getline(ss, w, ',');) v.push_back(std::stoi(w));
+    return v;
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--aloe" && i + 1 < argc) {
@@ -185,16 +213,44 @@ int main(int argc, char** argv) {
     } else if (a == "--scenes" && i + 1 < argc) {
       scene_frames = std::atoi(argv[++i]);
     } else if (a == "--windows" && i + 1 < argc) {
-      windows.clear();
-      std::stringstream ss(argv[++i]);
-      for (std::string w; std::getline(ss, w, ',');) windows.push_back(std::stoi(w));
+      windows = list(argv[++i]);
+    } else if (a == "--edge" && i + 1 < argc) {
+      edges = list(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: %s [--aloe DIR] [--scenes FRAMES] [--windows N,N,...]\n",
+      std::fprintf(stderr,
+                   "usage: %s [--aloe DIR] [--scenes FRAMES] [--windows N,N,...] [--edge K,...]\n",
                    argv[0]);
       return 2;
     }
   }
   try {
+    if (!edges.empty()) {
+      std::printf(
+          "opencv mode, edge_candidates K: bad %% of the truth pixels (density %%, bad %% of those "
+          "with a disparity)\n  %-34s %3s %4s %7s   %-26s   %-26s\n",
+          "pair", "N", "K", "pixels", "left edge band", "valid region");
+      std::vector<Pair> pairs{tsukuba()};
+      if (!aloe_dir.empty()) pairs.push_back(aloe(aloe_dir));
+      for (const Pair& p : pairs)
+        for (const int n : windows)
+          for (const int k : edges) print_edge_row(p.name, n, k, score_edge(p, n, k));
+      for (const char* preset : {"cyclist-crossing", "street-crossing"}) {
+        if (scene_frames <= 0) break;
+        const auto frames = scenes(preset, scene_frames, false);
+        for (const int n : windows)
+          for (const int k : edges) {
+            std::array<Score, 2> sum{};
+            for (const Pair& p : frames) {
+              const auto s = score_edge(p, n, k);
+              sum[0].add(s[0]);
+              sum[1].add(s[1]);
+            }
+            print_edge_row(std::string(preset) + " (" + std::to_string(frames.size()) + " fr)", n,
+                           k, sum);
+          }
+      }
+      return 0;
+    }
     std::printf(
         "bad %% = truth pixels of the valid region with no disparity or |d - truth| > 1 px "
         "(density %%, bad %% of the pixels with a disparity)\n  %-34s %3s %8s   %-26s   %-26s   %-26s\n",

@@ -19,9 +19,13 @@ using sad_t = std::uint32_t;
 /// The winner of one pixel's candidates, the rejection rules and the value (docs/disparity.md),
 /// a pure function of the N x N SADs of the NumDisp candidates and the window's texture sum;
 /// used by the streaming kernel, not by the direct reference (host/reference/disparity_ref.hpp).
+/// `limit`: the candidates whose window lies inside the right image (edge_limit; all of them
+/// but at the left edge); only the first min(candidates, limit) take part.
 template <int NumDisp>
-disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const DisparityConfig& cfg) {
-  const int n = candidates<NumDisp>(cfg);  // the first n of the built candidates
+disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const DisparityConfig& cfg,
+              int limit = NumDisp) {
+  const int built = candidates<NumDisp>(cfg);  // the first n of the built candidates
+  const int n = limit < built ? limit : built;
   int best = 0;
   for (int d = 1; d < n; ++d)
     if (sad[d] <= sad[best]) best = d;  // <=: the largest d wins ties, as in cv::StereoBM
@@ -67,7 +71,7 @@ class DisparityCore {
   using pixel_beat = typename Params::pixel_beat;
 
   explicit DisparityCore(const DisparityConfig& cfg = {})
-      : cfg_(cfg), nd_(candidates<ND>(cfg)) {}
+      : cfg_(cfg), nd_(candidates<ND>(cfg)), edge_min_(edge_min<ND>(cfg)) {}
   const DisparityConfig& config() const { return cfg_; }
 
   /// Processes the beat at (x0, y); calls `emit(disp_t)` once per result pixel, in raster
@@ -105,8 +109,9 @@ class DisparityCore {
       twin_ = (x == 0 ? 0 : twin_) + static_cast<sad_t>(t) - (x >= N ? tcol_[x - N] : 0);
       const int u = x - R, v = y - R;
       if (u < 0 || v < R) continue;
-      const bool valid = u >= cfg_.dmin + nd_ - 1 + R;
-      emit(valid ? decide<ND>(win_, twin_, cfg_) : invalid_code(cfg_));
+      // All nd_ candidates inside the right image, or at least edge_min_ of them (the left edge).
+      const int limit = edge_limit<ND>(cfg_, u, R);
+      emit(limit >= edge_min_ ? decide<ND>(win_, twin_, cfg_, limit) : invalid_code(cfg_));
     }
   }
 
@@ -114,7 +119,8 @@ class DisparityCore {
   static int absdiff(int a, int b) { return a > b ? a - b : b - a; }
 
   DisparityConfig cfg_;
-  int nd_;  // candidates in use, candidates<ND>(cfg_)
+  int nd_;        // candidates in use, candidates<ND>(cfg_)
+  int edge_min_;  // the fewest a pixel is decided among, edge_min<ND>(cfg_)
   std::array<std::array<pixel_t, W>, N + 1> left_{};
   std::array<std::array<pixel_t, W>, N + 1> right_{};
   std::array<std::array<std::uint16_t, W>, ND> col_{};  // Q16.0, at most N * 255

@@ -49,6 +49,11 @@ struct DisparityConfig {
                               //      SAD <= best + best * ratio / 100
   bool subpixel = false;      // 4-bit sub-pixel fraction (StereoBM's parabola-like fit)
   bool opencv_invalid = false;  // invalid code (dmin - 1) * 16 as StereoBM, else 0
+  int edge_candidates = 0;      // the left edge band (docs/disparity.md, "The left edge"): a
+                                // column whose window fits inside the right image for only
+                                // the first k < n candidates is decided among those k when
+                                // k >= edge_candidates; 0 (or >= n) = only with all n, as
+                                // cv::StereoBM (its first dmin + n - 1 + R columns invalid)
 };
 
 /// Clocks from a beat entering the core's datapath to its window sums entering the decision
@@ -68,6 +73,22 @@ constexpr int queue_words(int n) {
 template <int NumDisp>
 constexpr int candidates(const DisparityConfig& c) {
   return c.num_disp > 0 && c.num_disp < NumDisp ? c.num_disp : NumDisp;
+}
+
+/// The fewest candidates a pixel at the left edge is decided among: edge_candidates, or all
+/// candidates<NumDisp>(c) when it is 0 or above them.
+template <int NumDisp>
+constexpr int edge_min(const DisparityConfig& c) {
+  const int n = candidates<NumDisp>(c);
+  return c.edge_candidates > 0 && c.edge_candidates < n ? c.edge_candidates : n;
+}
+
+/// The candidates whose window lies inside the right image at output column u: d = dmin + k
+/// needs u - R - d >= 0, so k < u - R - dmin + 1 (at most NumDisp; below 1: none).
+template <int NumDisp>
+constexpr int edge_limit(const DisparityConfig& c, int u, int radius) {
+  const int k = u - radius - c.dmin + 1;
+  return k < 0 ? 0 : k > NumDisp ? NumDisp : k;
 }
 
 /// The code of an invalid pixel.

@@ -145,8 +145,8 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
     out.right = right_grey;
   }
   if (!engine_) {
-    const auto dcfg =
-        disparity::mode_config(opt_.mode, out.left.cols, out.left.rows, opt_.min_disp);
+    auto dcfg = disparity::mode_config(opt_.mode, out.left.cols, out.left.rows, opt_.min_disp);
+    dcfg.edge_candidates = opt_.edge_candidates;
     out.disparity = disparity::disparity_image(out.left, out.right, opt_.window, opt_.min_disp,
                                                opt_.max_disp, dcfg);
     // The road stage always fits the road (heights are measured above it); it removes it from

@@ -31,6 +31,9 @@ struct RunOptions {
   int min_disp = 0;
   int max_disp = 127;
   disparity::Mode mode = disparity::kDefaultMode;
+  // DisparityConfig::edge_candidates: the left edge band decided from 8 candidates on
+  // (docs/disparity.md, "The left edge band": chosen on Aloe).
+  int edge_candidates = 8;
   int tiles_x = 4, tiles_y = 4;
   int min_area = 200;
   bool road = true;     // the road stage (docs/road.md) between disparity and labelling

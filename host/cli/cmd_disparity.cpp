@@ -64,6 +64,9 @@ void add_disparity_command(CLI::App& app) {
       ->check(non_negative("%", "15"));
   cmd->add_option("--sad-limit", o->sad_limit, "Reject a minimum SAD above this, 0 = off")
       ->check(non_negative("", "0"));
+  cmd->add_option("--edge-candidates", o->edge_candidates, disparity::kEdgeCandidatesHelp)
+      ->capture_default_str()
+      ->check(non_negative("", "32"));
   cmd->add_option("--out", o->out,
                   "8-bit PNG: 0 = invalid, else the integer disparity (x16 value >> 4, at most "
                   "255); with --min-disp 0 a valid d below 1 also reads 0")

@@ -99,6 +99,9 @@ void add_run_command(CLI::App& app) {
       ->capture_default_str()->check(positive("px", "64"));
   cmd->add_option("--mode", o->mode, "Disparity mode (scw disparity --help)")->capture_default_str()
       ->check(CLI::IsMember({"thesis", "opencv"}));
+  cmd->add_option("--edge-candidates", o->run.edge_candidates, disparity::kEdgeCandidatesHelp)
+      ->capture_default_str()
+      ->check(non_negative("", "32"));
   cmd->add_option("--min-area", o->run.min_area, "Smallest object, px")->capture_default_str()
       ->check(non_negative("px", "50"));
   cmd->add_flag("!--no-road", o->run.road,

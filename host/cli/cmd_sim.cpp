@@ -116,6 +116,9 @@ void add_sim_command(CLI::App& app) {
   cmd->add_option("--left", s.left, "left image (default: a synthetic street scene)");
   cmd->add_option("--right", s.right, "right image");
   cmd->add_option("--mode", s.mode, "disparity mode: thesis or opencv")->capture_default_str();
+  cmd->add_option("--edge-candidates", s.edge_candidates, disparity::kEdgeCandidatesHelp)
+      ->capture_default_str()
+      ->check(non_negative("", "8"));
   cmd->add_option("--min-disp", s.dmin, "smallest disparity (default: the configuration's)")
       ->check(non_negative("px", "20"));
   cmd->add_option("--num-disp", s.num_disp, "candidates (default: the configuration's)")

@@ -64,12 +64,16 @@ FilesRun run_disparity_files(const FilesOptions& o, std::ostream& log) {
   if (o.texture >= 0) cfg.texture_threshold = o.texture;
   if (o.uniqueness >= 0) cfg.uniqueness_ratio = o.uniqueness;
   if (o.sad_limit >= 0) cfg.sad_limit = o.sad_limit;
+  cfg.edge_candidates = o.edge_candidates;
 
   log << "disparity: " << left.cols << " x " << left.rows << " px, window " << o.window << ", d "
       << o.min_disp << " .. " << o.max_disp << ", " << o.mode << " mode (prefilter "
       << (cfg.prefilter ? "cap " + std::to_string(cfg.prefilter_cap) : std::string("off"))
       << ", texture " << cfg.texture_threshold << ", uniqueness " << cfg.uniqueness_ratio
       << ", SAD limit " << cfg.sad_limit << ", sub-pixel " << (cfg.subpixel ? "on" : "off")
+      << (cfg.edge_candidates > 0
+              ? ", left edge from " + std::to_string(cfg.edge_candidates) + " candidates"
+              : std::string())
       << ")\n";
   FilesRun r;
   r.d16 = disparity_image(left, right, o.window, o.min_disp, o.max_disp, cfg);

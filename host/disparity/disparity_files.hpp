@@ -21,6 +21,7 @@ struct FilesOptions {
   int min_disp = 0, max_disp = 0;
   std::string mode = mode_name(kDefaultMode);
   int prefilter_cap = -1, texture = -1, uniqueness = -1, sad_limit = -1;  // -1: the mode's
+  int edge_candidates = 0;   // DisparityConfig::edge_candidates
   std::string out;           // 8-bit picture, always written
   std::string out16, color;  // empty: not written
 };

@@ -31,6 +31,11 @@ enum class Mode { thesis, opencv };
 /// The one default of all three commands; docs/disparity.md ("The default mode") has the
 /// measurements that chose it.
 constexpr Mode kDefaultMode = Mode::opencv;
+/// The help of `--edge-candidates` (DisparityConfig::edge_candidates), one text for every command.
+constexpr const char* kEdgeCandidatesHelp =
+    "Left edge band: decide a column whose window fits the right image for only some candidates "
+    "among those, when there are at least this many; 0 = only with all (cv::StereoBM: the first "
+    "min-disp + candidates - 1 + window/2 columns stay invalid)";
 /// "thesis" / "opencv".
 const char* mode_name(Mode m);
 /// The mode named "thesis" or "opencv"; throws std::invalid_argument naming both otherwise.

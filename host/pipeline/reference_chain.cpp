@@ -34,16 +34,17 @@ ReferenceFrame ReferenceChain::next(const cv::Mat& left, const cv::Mat& right) {
   const int w = left.cols, h = left.rows;
   auto cfg = disparity::mode_config(opt.mode, w, h, opt.dmin);
   cfg.num_disp = opt.num_disp;
+  cfg.edge_candidates = opt.edge_candidates;
   const cv::Mat l = left.isContinuous() ? left : left.clone();
   const cv::Mat r = right.isContinuous() ? right : right.clone();
   // cv::StereoBM takes multiples of 16 candidates; other ranges (the thesis's 45) go through the
   // direct reference, plain loops over every window, equal to StereoBM where both apply.
-  auto d =
-      opt.num_disp % 16 == 0
-          ? reference::stereo_bm(l.ptr<std::uint8_t>(), r.ptr<std::uint8_t>(), w, h, window_n_,
-                                 opt.num_disp, cfg, true)
-          : reference::disparity_reference(l.ptr<std::uint8_t>(), r.ptr<std::uint8_t>(), w, h,
-                                           window_n_, opt.num_disp, cfg);
+  // cv::StereoBM has no left edge band either.
+  auto d = opt.num_disp % 16 == 0 && cfg.edge_candidates == 0
+               ? reference::stereo_bm(l.ptr<std::uint8_t>(), r.ptr<std::uint8_t>(), w, h, window_n_,
+                                      opt.num_disp, cfg, true)
+               : reference::disparity_reference(l.ptr<std::uint8_t>(), r.ptr<std::uint8_t>(), w, h,
+                                                window_n_, opt.num_disp, cfg);
   ReferenceFrame f;
   f.disparity = cv::Mat(h, w, CV_16S);
   std::memcpy(f.disparity.data, d.data(), d.size() * sizeof(std::uint16_t));

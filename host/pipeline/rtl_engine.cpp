@@ -40,6 +40,7 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
                             const KnotSource& knot_source) {
   StageOptions so;
   so.mode = o.mode;
+  so.edge_candidates = o.edge_candidates;
   so.dmin = o.min_disp;
   so.num_disp = o.max_disp - o.min_disp + 1;
   so.tiles_x = o.tiles_x;

@@ -56,6 +56,7 @@ sim::PipelineSetup make_setup(int width, int height, int grid_log2, const StageO
   s.lead_rows = lead_rows;
   s.disparity = disparity::mode_config(opt.mode, width, height, opt.dmin);
   s.disparity.num_disp = opt.num_disp;
+  s.disparity.edge_candidates = opt.edge_candidates;
   const int invalid = static_cast<std::int16_t>(hls::disparity::invalid_code(s.disparity));
   s.labelling = labelling::grid_config(width, height, opt.tiles_x, opt.tiles_y,
                                        invalid > 0 ? invalid : 0, opt.min_area);

@@ -20,6 +20,7 @@ namespace scw::host::pipeline {
 /// The stages' settings that do not come from the build.
 struct StageOptions {
   disparity::Mode mode = disparity::kDefaultMode;
+  int edge_candidates = 0;  // DisparityConfig::edge_candidates (0: the mode's blind left band)
   int dmin = 0;
   int num_disp = 16;  // candidates dmin .. dmin + num_disp - 1
   int tiles_x = 2, tiles_y = 2;

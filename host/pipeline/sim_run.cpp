@@ -124,6 +124,7 @@ SimRun run(const SimOptions& o, std::ostream& log, int width, int height, int dm
   if (!o.synth_json.empty()) s.slowest = synth::slowest_module(o.synth_json, o.config, P);
   StageOptions so;
   so.mode = disparity::mode_from_name(o.mode);
+  so.edge_candidates = o.edge_candidates;
   so.dmin = o.dmin >= 0 ? o.dmin : dmin_default;
   so.num_disp = o.num_disp > 0 ? o.num_disp : num_disp_default;
   so.tiles_x = Build::kMaxTilesX;
@@ -261,6 +262,7 @@ nlohmann::json sim_json(const SimRun& r) {
           {"dmin", r.dmin},
           {"num_disp", r.num_disp},
           {"mode", disparity::mode_name(r.mode)},
+          {"edge_candidates", o.edge_candidates},
           {"clock_mhz", thesis::kClockMhz},
           {"ppc", r.ppc},
           {"engine", r.engine},

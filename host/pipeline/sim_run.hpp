@@ -29,6 +29,7 @@ struct SimOptions {
   std::string rtl_stages;      // comma list: these blocks Verilated, the rest C++
   std::string left, right;     // empty: a synthetic street
   std::string mode = disparity::mode_name(disparity::kDefaultMode);
+  int edge_candidates = 0;      // DisparityConfig::edge_candidates (0: cv::StereoBM's band)
   int dmin = -1, num_disp = 0;  // -1 / 0: the configuration's
   std::string stalls = "none";  // sim::StallPattern::parse
   std::string synth_json;       // a `scw synth --json` report of the same build: ms at its Fmax

@@ -84,14 +84,19 @@ std::vector<std::uint16_t> disparity_reference(const std::uint8_t* left, const s
   }
 
   const int rad = window_n / 2;
-  const int dmin = cfg.dmin, dmax = cfg.dmin + num_disp - 1;
-  const int u_begin = rad + std::max(dmax, 0), u_end = width - rad + std::min(dmin, 0);
+  const int dmin = cfg.dmin;
+  // The left edge: column u is decided among the candidates whose window lies inside the right
+  // image, d <= u - rad, when there are at least `fewest` of them (all num_disp by default).
+  const int fewest =
+      cfg.edge_candidates > 0 && cfg.edge_candidates < num_disp ? cfg.edge_candidates : num_disp;
+  const int u_begin = rad + std::max(dmin + fewest - 1, 0), u_end = width - rad + std::min(dmin, 0);
   const int v_begin = rad, v_end = height - rad;
   std::vector<int> sad(static_cast<std::size_t>(num_disp));
   for (int v = v_begin; v < v_end; ++v)
     for (int u = u_begin; u < u_end; ++u) {
+      const int n = std::min(num_disp, u - rad - dmin + 1);  // the candidates that fit
       int best = 0;  // candidate index k, d = dmin + k
-      for (int k = 0; k < num_disp; ++k) {
+      for (int k = 0; k < n; ++k) {
         sad[k] = sad_reference(l, r, width, u, v, dmin + k, window_n);
         if (sad[k] <= sad[best]) best = k;
       }
@@ -107,7 +112,7 @@ std::vector<std::uint16_t> disparity_reference(const std::uint8_t* left, const s
       if (cfg.uniqueness_ratio > 0) {
         const int thresh = min_sad + min_sad * cfg.uniqueness_ratio / 100;
         bool unique = true;
-        for (int k = 0; k < num_disp; ++k)
+        for (int k = 0; k < n; ++k)
           if (std::abs(k - best) > 1 && sad[k] <= thresh) unique = false;
         if (!unique) continue;
       }
@@ -115,7 +120,7 @@ std::vector<std::uint16_t> disparity_reference(const std::uint8_t* left, const s
 
       const int d = dmin + best;
       std::int32_t value = d * 16;
-      if (cfg.subpixel && best > 0 && best < num_disp - 1)
+      if (cfg.subpixel && best > 0 && best < n - 1)
         value = subpixel_reference(d, sad[best - 1], min_sad, sad[best + 1]);
       out[at(width, u, v)] = static_cast<std::uint16_t>(static_cast<std::int16_t>(value));
     }

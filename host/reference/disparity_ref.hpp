@@ -34,6 +34,9 @@ int sad_reference(const std::uint8_t* l, const std::uint8_t* r, int width, int u
 ///    candidate index runs from the largest d down and keeps the first minimum);
 ///  - valid region: r <= v < H - r and r + max(DMax, 0) <= u < W - r + min(dmin, 0),
 ///    r = N/2 (every tap of every candidate inside both images); invalid_code(cfg) outside;
+///    with cfg.edge_candidates = k (1 .. num_disp - 1) the region starts at r + dmin + k - 1
+///    instead, and a column u left of r + DMax is decided among the candidates d <= u - r
+///    alone (the left edge band);
 ///  - rejections (each off at 0, each to invalid_code(cfg)): texture, uniqueness, SAD limit;
 ///  - value: d * 16, or StereoBM's 4-bit sub-pixel fit when cfg.subpixel.
 /// cfg.width and cfg.height are not read: `width` and `height` govern. Plain loops over every

@@ -119,6 +119,7 @@ nlohmann::json config_json(const Frame& f, int window, std::uint16_t invalid) {
           {"uniqueness_ratio", cfg.uniqueness_ratio},
           {"subpixel", cfg.subpixel},
           {"opencv_invalid", cfg.opencv_invalid},
+          {"edge_candidates", cfg.edge_candidates},
           {"invalid_code", invalid}};
 }
 

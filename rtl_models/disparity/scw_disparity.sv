@@ -46,6 +46,7 @@ module scw_disparity #(
   input  logic [7:0]       cfg_uniqueness_i,
   input  logic             cfg_subpixel_i,
   input  logic             cfg_opencv_invalid_i,
+  input  logic [NumW-1:0]  cfg_edge_i,       // edge_candidates: 0 or >= n = all n (StereoBM)
   // left and right rectified pixels
   input  logic             l_valid_i,
   output logic             l_ready_o,
@@ -99,8 +100,9 @@ module scw_disparity #(
   logic [ColW-1:0] last_col_q, last_col_m1_q;
   logic [HW-1:0] last_row_q, height_q;
   logic [WW-1:0] dmin_q, width_q;
-  logic [NumW-1:0] num_q;
-  logic [XW-1:0] first_valid_q;  // dmin + n - 1 + R: the first column with a decision
+  logic [NumW-1:0] num_q, edge_q;
+  logic [XW-1:0] first_valid_q;  // dmin + e - 1 + R: the first column with a decision
+  logic [XW-1:0] edge_base_q;    // 2R + dmin - 1: input column x has x - it candidates inside
   logic [XW-1:0] fvr_q;          // first_valid + R: the first input column with a decision
   logic [XW-1:0] hrm_q;          // H - R - 1
   // Per lane i, what a word column must be for lane i to hold a decision (region) or a
@@ -133,7 +135,10 @@ module scw_disparity #(
     dmin_q        <= cfg_dmin_i;
     num_q         <= (cfg_num_disp_i == '0 || cfg_num_disp_i >= NumW'(NumDisp))
                          ? NumW'(NumDisp) : cfg_num_disp_i;
-    first_valid_q <= XW'(cfg_dmin_i) + XW'(num_q) - 1'b1 + XW'(R);
+    // edge_min<NumDisp>(cfg): the fewest candidates a column is decided among.
+    edge_q        <= (cfg_edge_i == '0 || cfg_edge_i >= num_q) ? num_q : cfg_edge_i;
+    first_valid_q <= XW'(cfg_dmin_i) + XW'(edge_q) - 1'b1 + XW'(R);
+    edge_base_q   <= XW'(cfg_dmin_i) + XW'(2 * R) - 1'b1;
     fvr_q         <= first_valid_q + XW'(R);
     hrm_q         <= XW'(cfg_height_i) - XW'(R + 1);
     invalid_q     <= cfg_opencv_invalid_i ? {12'(cfg_dmin_i) - 12'd1, 4'd0} : '0;
@@ -338,9 +343,26 @@ module scw_disparity #(
     end
   end
 
+  // The left edge (hls::disparity::edge_limit): lane i of the word at core_col_q is input
+  // column x = c P + i, whose output column's window fits the right image for
+  // k = x - edge_base candidates. k steps by P a word from i - edge_base at a row's start, an
+  // add behind a register; its clamp to 0 .. NumDisp enters the issue delay line with the word.
+  logic [Ppc*NumW-1:0] limit;
+  for (genvar i = 0; i < Ppc; i++) begin : gen_k
+    logic signed [XW:0] k0, k_q;
+    assign k0 = $signed((XW + 1)'(i)) - $signed({1'b0, edge_base_q});
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) k_q <= k0;  // column 0 comes first
+      else if (issue) k_q <= core_last_col ? k0 : k_q + $signed((XW + 1)'(Ppc));
+    end
+    assign limit[i*NumW +: NumW] = k_q < 0 ? '0
+                                 : k_q > $signed((XW + 1)'(NumDisp)) ? NumW'(NumDisp)
+                                                                     : NumW'(k_q);
+  end
+
   // The core sees a beat PfLatency cycles after its issue: the prefilter's read, or as long a
   // delay of the raw pair, so both modes share one latency.
-  localparam int unsigned InfoW = 2 * Ppc + 2 * LbAW + HW + ColW;
+  localparam int unsigned InfoW = Ppc * NumW + 2 * Ppc + 2 * LbAW + HW + ColW;
   logic [PfLatency-1:0] dly_valid_q;
   logic [PfLatency*InfoW-1:0] dly_info_q;
   logic [PfLatency*2*BeatW-1:0] dly_raw_q;
@@ -350,7 +372,7 @@ module scw_disparity #(
       else dly_valid_q <= issue;
     end
     always_ff @(posedge clk_i) begin
-      dly_info_q <= {emit, region, core_base, core_old_base, core_row_q, core_col_q};
+      dly_info_q <= {limit, emit, region, core_base, core_old_base, core_row_q, core_col_q};
       dly_raw_q  <= {have_r, have_l};
     end
   end else begin : gen_dly
@@ -362,7 +384,7 @@ module scw_disparity #(
     // whose slow clock-to-out would start the sums' address arithmetic.
     always_ff @(posedge clk_i) begin
       if (issue) begin
-        dly_info_q[InfoW-1:0]   <= {emit, region, core_base, core_old_base, core_row_q,
+        dly_info_q[InfoW-1:0]   <= {limit, emit, region, core_base, core_old_base, core_row_q,
                                     core_col_q};
         dly_raw_q[2*BeatW-1:0]  <= {have_r, have_l};
       end
@@ -379,12 +401,13 @@ module scw_disparity #(
 
   logic c_valid;
   logic [Ppc-1:0] c_emit, c_region;
+  logic [Ppc*NumW-1:0] c_limit;
   logic [LbAW-1:0] c_base, c_old_base;
   logic [HW-1:0] c_row;
   logic [ColW-1:0] c_col;
   logic [BeatW-1:0] c_left, c_right, raw_l, raw_r;
   assign c_valid = dly_valid_q[PfLatency-1];
-  assign {c_emit, c_region, c_base, c_old_base, c_row, c_col} =
+  assign {c_limit, c_emit, c_region, c_base, c_old_base, c_row, c_col} =
       dly_info_q[(PfLatency-1)*InfoW +: InfoW];
   assign {raw_r, raw_l} = dly_raw_q[(PfLatency-1)*2*BeatW +: 2*BeatW];
   assign c_left  = prefilter_q ? pf_l_data : raw_l;
@@ -394,17 +417,38 @@ module scw_disparity #(
   logic s_valid;
   logic [Ppc*NumDisp*SadBits-1:0] s_sad;
   logic [Ppc*SadBits-1:0] s_tex;
-  logic [2*Ppc-1:0] s_tag;
+  // The left edge's candidate counts ride the sums' tag; a clock before the SADs leave, they
+  // are decoded into each lane's band mask, so the decision's leaves see a register.
+  localparam int unsigned TagW = Ppc * (2 + NumW);
+  logic [Ppc*NumW-1:0] s_limit, pre_limit;
+  logic [TagW-1:0] s_tag;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [TagW-1:0] pre_tag;  // only its limits are read
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic pre_en;
   scw_disparity_sums #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Window(Window),
-    .NumDisp(NumDisp), .TagBits(2 * Ppc)
+    .NumDisp(NumDisp), .TagBits(TagW)
   ) u_sums (
     .clk_i, .rst_ni, .cfg_dmin_i(dmin_q), .cfg_cap_i,
     .valid_i(c_valid), .col_i(c_col), .row_i(c_row), .base_i(c_base),
     .old_base_i(c_old_base),
-    .left_i(c_left), .right_i(c_right), .tag_i({c_emit, c_region}),
-    .valid_o(s_valid), .sad_o(s_sad), .texture_o(s_tex), .tag_o(s_tag)
+    .left_i(c_left), .right_i(c_right), .tag_i({c_limit, c_emit, c_region}),
+    .valid_o(s_valid), .sad_o(s_sad), .texture_o(s_tex), .tag_o(s_tag),
+    .tag_pre_o(pre_tag), .tag_pre_en_o(pre_en)
   );
+  assign s_limit   = s_tag[TagW-1 -: Ppc*NumW];
+  assign pre_limit = pre_tag[TagW-1 -: Ppc*NumW];
+  logic [Ppc*NumDisp-1:0] band_q;
+  always_ff @(posedge clk_i) begin
+    if (pre_en) begin
+      for (int i = 0; i < Ppc; i++) begin
+        for (int d = 0; d < NumDisp; d++) begin
+          band_q[i*NumDisp + d] <= NumW'(d) < pre_limit[i*NumW +: NumW];
+        end
+      end
+    end
+  end
 
   logic [Ppc-1:0] d_valid;
   logic [OutW-1:0] d_disp;
@@ -416,6 +460,7 @@ module scw_disparity #(
       .cfg_uniqueness_i, .cfg_subpixel_i, .cfg_invalid_i(invalid_q),
       .valid_i(s_valid && s_tag[Ppc + i]), .region_i(s_tag[i]),
       .sad_i(s_sad[i*NumDisp*SadBits +: NumDisp*SadBits]),
+      .band_i(band_q[i*NumDisp +: NumDisp]), .limit_i(s_limit[i*NumW +: NumW]),
       .texture_i(s_tex[i*SadBits +: SadBits]),
       .valid_o(d_valid[i]), .disp_o(d_disp[i*16 +: 16])
     );

@@ -34,6 +34,13 @@
 // cfg_* are static: registered here without reset (with what is derived from them), which keeps
 // them off every timing path; set them at least a clock before the first input that uses them.
 // cfg_num_i 0 or above NumDisp means NumDisp, as candidates<NumDisp>(cfg) does.
+//
+// The left edge: limit_i is the pixel's count of candidates whose window lies inside the right
+// image (decide()'s `limit`), band_i the same as a mask, bit d = d < limit_i, formed by the
+// caller into a register so the leaves' select starts at a register as in_use_q does. A
+// candidate takes part when it is in use and in the band; limit_i rides beside the tree to
+// stage A for the uniqueness mask and the sub-pixel fit's last candidate. Away from the edge
+// the caller drives all ones and NumDisp.
 // cfg_sad_limit_i and cfg_texture_i are the C++ int fields, so one with bit 31 set (negative)
 // is off. DminBits <= 12: only d's low 12 bits reach the 16-bit d * 16.
 module scw_disparity_decide #(
@@ -53,6 +60,8 @@ module scw_disparity_decide #(
   input  logic                         valid_i,
   input  logic                         region_i,  // 0: the invalid code (outside the region)
   input  logic [NumDisp*SadBits-1:0]   sad_i,     // candidate d at [d*SadBits +: SadBits]
+  input  logic [NumDisp-1:0]           band_i,    // d < limit_i, from a register
+  input  logic [$clog2(NumDisp+1)-1:0] limit_i,   // candidates inside the right image
   input  logic [SadBits-1:0]           texture_i,
   output logic                         valid_o,
   output logic [15:0]                  disp_o
@@ -151,9 +160,11 @@ module scw_disparity_decide #(
   logic tex_rej;
   logic [2*TreeStages-1:0] side_q;
   logic [(TreeStages+3)*SadW-1:0] sads_q;
+  logic [TreeStages*NumW-1:0] limit_q;
   assign tex_rej = tex_all_q || (tex_en_q && texture_i < tex_q);
   always_ff @(posedge clk_i) begin
     side_q <= (2 * TreeStages)'({side_q, region_i, tex_rej});
+    limit_q <= (TreeStages * NumW)'({limit_q, limit_i});
     sads_q <= ((TreeStages + 3) * SadW)'({sads_q, sad_i});
   end
 
@@ -183,8 +194,8 @@ module scw_disparity_decide #(
         logic [SadBits-1:0] sad, prev, next;
         logic unused;
         if (d < NumDisp) begin : gen_cand
-          assign unused = !in_use_q[d];
-          assign sad = in_use_q[d] ? sad_i[d*SadBits +: SadBits] : '1;
+          assign unused = !(in_use_q[d] && band_i[d]);
+          assign sad = (in_use_q[d] && band_i[d]) ? sad_i[d*SadBits +: SadBits] : '1;
         end else begin : gen_pad
           assign unused = 1'b1;
           assign sad = '1;
@@ -224,8 +235,10 @@ module scw_disparity_decide #(
   node_t root;
   /* verilator lint_on UNUSEDSIGNAL */
   logic t_region, t_tex_rej;
+  logic [NumW-1:0] t_limit;
   assign root = gen_lvl[Levels].v[0];
   assign {t_region, t_tex_rej} = side_q[2*TreeStages-1 -: 2];
+  assign t_limit = limit_q[TreeStages*NumW-1 -: NumW];
 
   // ---- A: products, limits, the uniqueness mask, sub-pixel set-up -----------------------
   logic [NumDisp-1:0] far;
@@ -243,7 +256,7 @@ module scw_disparity_decide #(
     end else begin : gen_no_below
       assign below = 1'b0;
     end
-    assign far[d] = uniq_en_q && in_use_q[d] && (above || below);
+    assign far[d] = uniq_en_q && in_use_q[d] && NumW'(d) < t_limit && (above || below);
   end
   // Both differences and both distances to m, registered; the sign picks them in B.
   assign neg = root.prev < root.next;
@@ -264,7 +277,10 @@ module scw_disparity_decide #(
     a_m_q   <= root.sad;
     a_inv_q <= !t_region || t_tex_rej || (lim_en_q && root.sad > lim_q);
     a_d_q   <= DispW'(dmin_q) + DispW'(root.idx);
-    a_fit_q <= sub_q && root.idx != '0 && root.idx != last_q;
+    // The winner is below both n and the limit, so it is the last of the min of the two
+    // exactly when it is the last of either.
+    a_fit_q <= sub_q && root.idx != '0 && root.idx != last_q &&
+               NumW'(root.idx) + 1'b1 != t_limit;
     a_far_q <= far;
     a_neg_q <= neg;
     a_full_q <= neg && root.prev == root.sad;

@@ -65,7 +65,11 @@ module scw_disparity_sums #(
   output logic                            valid_o,
   output logic [Ppc*NumDisp*SadBits-1:0]  sad_o,
   output logic [Ppc*SadBits-1:0]          texture_o,
-  output logic [TagBits-1:0]              tag_o
+  output logic [TagBits-1:0]              tag_o,
+  // the tag one stage before tag_o and the enable that moves it there: a parent forms a
+  // register from it that is loaded together with tag_o (decode ahead of the output)
+  output logic [TagBits-1:0]              tag_pre_o,
+  output logic                            tag_pre_en_o
 );
   /* verilator lint_off UNUSEDPARAM */
   localparam int unsigned PreStages = (Ppc > 1) ? $clog2(Ppc) : 0;
@@ -424,4 +428,6 @@ module scw_disparity_sums #(
   end
   assign valid_o = v_q[Latency];
   assign tag_o   = tag_q[(Latency-1)*TagBits +: TagBits];
+  assign tag_pre_o    = tag_q[(Latency-2)*TagBits +: TagBits];
+  assign tag_pre_en_o = v_q[Latency-1];
 endmodule

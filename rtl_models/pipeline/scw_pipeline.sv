@@ -69,6 +69,7 @@ module scw_pipeline #(
   input  logic [7:0]         cfg_uniqueness_i,
   input  logic               cfg_subpixel_i,
   input  logic               cfg_opencv_invalid_i,
+  input  logic [NumW-1:0]    cfg_edge_i,
   // labelling (hls::labelling::LabellingConfig; width and height are the frame's)
   input  logic [15:0]        cfg_tile_w_i,
   input  logic [15:0]        cfg_tile_h_i,
@@ -183,7 +184,7 @@ module scw_pipeline #(
   ) u_disparity (
     .clk_i, .rst_ni, .cfg_width_i, .cfg_height_i, .cfg_dmin_i, .cfg_num_disp_i,
     .cfg_prefilter_i, .cfg_cap_i, .cfg_sad_limit_i, .cfg_texture_i, .cfg_uniqueness_i,
-    .cfg_subpixel_i, .cfg_opencv_invalid_i,
+    .cfg_subpixel_i, .cfg_opencv_invalid_i, .cfg_edge_i,
     .l_valid_i(cl_valid), .l_ready_o(cl_ready), .l_data_i(cl_data), .l_sof_i(cl_sof),
     .l_eol_i(cl_eol),
     .r_valid_i(cr_valid), .r_ready_o(cr_ready), .r_data_i(cr_data), .r_sof_i(cr_sof),

@@ -34,6 +34,7 @@ void drive_disparity_cfg(VM& m, const hls::disparity::DisparityConfig& cfg) {
   m.cfg_uniqueness_i = port(cfg.uniqueness_ratio);
   m.cfg_subpixel_i = cfg.subpixel;
   m.cfg_opencv_invalid_i = cfg.opencv_invalid;
+  m.cfg_edge_i = port(hls::disparity::edge_min<Params::kNumDisp>(cfg));
 }
 
 template <typename VM, typename Params>

@@ -9,15 +9,16 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
-#include "hls/disparity/decide_latency.hpp"
-#include "hls/disparity/disparity.hpp"
-#include "sim/rtl/verilated_harness.hpp"
 #include "Vdecide_n45.h"
 #include "Vdecide_n45_scw_disparity_decide.h"
 #include "Vdecide_n8.h"
 #include "Vdecide_n8_scw_disparity_decide.h"
+#include "hls/disparity/decide_latency.hpp"
+#include "hls/disparity/disparity.hpp"
+#include "sim/rtl/verilated_harness.hpp"
 
 namespace {
 
@@ -63,6 +64,7 @@ template <int N>
 struct Pixel {
   bool valid = false;
   bool region = false;
+  int limit = N;  // candidates inside the right image (decide()'s limit): fewer at the left edge
   std::array<sad_t, N> sad{};
   sad_t texture = 0;
 };
@@ -74,12 +76,13 @@ struct Coverage {
   long lim_at = 0, lim_above = 0, tex_at = 0, tex_below = 0;
   long uniq_at = 0, uniq_above = 0, near_below = 0, uniq_prod_max = 0;
   long fit = 0, fit_q128 = 0, fit_down = 0, fit_flat = 0, fit_exact = 0, n_one = 0;
+  long edge = 0, edge_best_last = 0, edge_garbage_below = 0;  // a limit below the candidates
 };
 
 template <typename P>
 void observe(const Pixel<P::kNumDisp>& px, const DisparityConfig& cfg, Coverage& c) {
   const auto& s = px.sad;
-  const int n = candidates<P::kNumDisp>(cfg);
+  const int n = std::min(candidates<P::kNumDisp>(cfg), px.limit);
   int best = 0;
   for (int d = 1; d < n; ++d)
     if (s[d] < s[best]) best = d;
@@ -98,6 +101,11 @@ void observe(const Pixel<P::kNumDisp>& px, const DisparityConfig& cfg, Coverage&
   c.garbage_below += garbage_below ? 1 : 0;
   c.all_max += all_max ? 1 : 0;
   c.n_one += n == 1 ? 1 : 0;
+  if (px.limit < candidates<P::kNumDisp>(cfg)) {
+    ++c.edge;
+    c.edge_best_last += n > 1 && best == n - 1 ? 1 : 0;
+    c.edge_garbage_below += garbage_below ? 1 : 0;
+  }
   if (!px.region) {
     ++c.region_off;
     return;
@@ -136,28 +144,30 @@ void observe(const Pixel<P::kNumDisp>& px, const DisparityConfig& cfg, Coverage&
   // frac = 16 k + 1 exactly: the last quotient bit alone decides the rounding up.
   const sad_t diff = prev > next ? prev - next : next - prev, den = 2 * (std::max(prev, next) - m);
   c.fit_exact += prev > next && diff * 256 % den == 0 && diff * 256 / den % 16 == 1 ? 1 : 0;
-  c.fit_down += prev < next && decide<P::kNumDisp>(s, px.texture, cfg) <
+  c.fit_down += prev < next && decide<P::kNumDisp>(s, px.texture, cfg, px.limit) <
                                    static_cast<disp_t>((cfg.dmin + best) * 16)
                     ? 1
                     : 0;
 }
 
-/// One input: valid and region random, the SADs from one of several shapes, the candidates
-/// beyond n garbage (often below the minimum), the texture often on the threshold.
+/// One input: valid and region random, a third at the left edge (a limit below the candidates
+/// in use), the SADs from one of several shapes, the candidates beyond n garbage (often below
+/// the minimum), the texture often on the threshold.
 template <typename P>
 Pixel<P::kNumDisp> make_pixel(const DisparityConfig& cfg, std::mt19937_64& rng) {
   constexpr int N = P::kNumDisp;
   constexpr sad_t max = P::kMaxSad;
-  const int n = candidates<N>(cfg);
+  Pixel<N> px;
+  if (chance(rng, 33)) px.limit = static_cast<int>(pick(rng, 1, N));
+  const int n = std::min(candidates<N>(cfg), px.limit);
   const auto uni = [&](sad_t lo, sad_t hi) {
     return pick(rng, std::min(lo, max), std::min(hi, max));
   };
   // Everything but s[best] strictly above m, except ties where a shape wants them.
-  const auto place_min = [&](Pixel<N>& px, int best, sad_t m, bool ties) {
-    for (int d = 0; d < n; ++d) px.sad[d] = uni(ties ? m : m + 1, max);
-    px.sad[best] = m;
+  const auto place_min = [&](Pixel<N>& p, int best, sad_t m, bool ties) {
+    for (int d = 0; d < n; ++d) p.sad[d] = uni(ties ? m : m + 1, max);
+    p.sad[best] = m;
   };
-  Pixel<N> px;
   px.valid = chance(rng, 75);
   px.region = chance(rng, 90);
   for (auto& s : px.sad) s = uni(0, max);
@@ -334,6 +344,17 @@ void drive(VM& dut, const Pixel<P::kNumDisp>& px) {
   dut.texture_i = px.texture;
   dut.valid_i = px.valid ? 1 : 0;
   dut.region_i = px.region ? 1 : 0;
+  // The band mask as scw_disparity forms it: bit d = d < limit.
+  constexpr int kBandWords = (P::kNumDisp + 31) / 32;
+  std::array<std::uint32_t, kBandWords> band{};
+  for (int d = 0; d < std::min(px.limit, P::kNumDisp); ++d) band[d / 32] |= 1u << (d % 32);
+  static_assert(kBandWords <= 2, "band_i is at most 64 bits here");
+  const std::uint64_t mask = kBandWords == 1
+                                 ? band[0]
+                                 : static_cast<std::uint64_t>(band[0]) |
+                                       static_cast<std::uint64_t>(band[kBandWords - 1]) << 32;
+  dut.band_i = static_cast<std::remove_reference_t<decltype(dut.band_i)>>(mask);
+  dut.limit_i = static_cast<std::uint8_t>(px.limit);
 }
 
 template <typename P>
@@ -342,7 +363,8 @@ std::string describe(const DisparityConfig& cfg, const Pixel<P::kNumDisp>& px) {
   o << "num_disp " << cfg.num_disp << " dmin " << cfg.dmin << " sad_limit " << cfg.sad_limit
     << " texture_threshold " << cfg.texture_threshold << " uniqueness " << cfg.uniqueness_ratio
     << " subpixel " << cfg.subpixel << " opencv_invalid " << cfg.opencv_invalid << "\n  valid "
-    << px.valid << " region " << px.region << " texture " << px.texture << "\n  sad";
+    << px.valid << " region " << px.region << " limit " << px.limit << " texture " << px.texture
+    << "\n  sad";
   for (const auto s : px.sad) o << ' ' << s;
   return o.str();
 }
@@ -393,8 +415,8 @@ void run(sim::Harness<VM>& h, const DisparityConfig& cfg, int cycles, std::mt199
       drive<VM, P>(dut, px);
       observe<P>(px, cfg, cov);
       in.push_back(px);
-      expect.push_back(
-          {px.valid, px.region ? decide<P::kNumDisp>(px.sad, px.texture, cfg) : invalid_code(cfg)});
+      expect.push_back({px.valid, px.region ? decide<P::kNumDisp>(px.sad, px.texture, cfg, px.limit)
+                                            : invalid_code(cfg)});
     } else {
       dut.valid_i = 0;
     }
@@ -429,12 +451,15 @@ void check_decide(const char* name, int cycles_per_run, std::uint64_t seed) {
                          << cov.uniq_above << ", near below " << cov.near_below << ", max m * 255 "
                          << cov.uniq_prod_max << ", fit " << cov.fit << ", frac 128 "
                          << cov.fit_q128 << ", frac < 0 rounding down " << cov.fit_down
-                         << ", diff 0 " << cov.fit_flat << ", frac 16 k + 1 " << cov.fit_exact);
-  for (const long c :
-       {cov.ties,      cov.best_first, cov.best_last,  cov.garbage_below, cov.all_max,
-        cov.n_one,     cov.region_off, cov.lim_at,     cov.lim_above,     cov.tex_at,
-        cov.tex_below, cov.uniq_at,    cov.uniq_above, cov.near_below,    cov.uniq_prod_max,
-        cov.fit,       cov.fit_q128,   cov.fit_down,   cov.fit_flat,      cov.fit_exact})
+                         << ", diff 0 " << cov.fit_flat << ", frac 16 k + 1 " << cov.fit_exact
+                         << ", edge " << cov.edge << ", edge best last " << cov.edge_best_last
+                         << ", edge garbage below " << cov.edge_garbage_below);
+  for (const long c : {cov.ties,       cov.best_first,     cov.best_last,         cov.garbage_below,
+                       cov.all_max,    cov.n_one,          cov.region_off,        cov.lim_at,
+                       cov.lim_above,  cov.tex_at,         cov.tex_below,         cov.uniq_at,
+                       cov.uniq_above, cov.near_below,     cov.uniq_prod_max,     cov.fit,
+                       cov.fit_q128,   cov.fit_down,       cov.fit_flat,          cov.fit_exact,
+                       cov.edge,       cov.edge_best_last, cov.edge_garbage_below})
     CHECK(c >= 20);
 }
 

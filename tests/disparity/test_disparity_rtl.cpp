@@ -137,6 +137,46 @@ TEST_CASE("scw_disparity equals the disparity model beat for beat (opencv mode)"
   SECTION("P = 4, d 1..5, odd height") { check_stage<Vdisparity_p4, DisparityP4>(opencv(32, 11, 1)); }
 }
 
+// The left edge band: columns decided among the candidates that fit the right image, from
+// edge_candidates of them on; every lane position of the band's first column is met by the
+// dmin and edge values (the band starts at dmin + edge - 1 + R).
+TEST_CASE("scw_disparity equals the disparity model beat for beat (left edge band)",
+          "[disparity][rtl]") {
+  using test::DisparityP1;
+  using test::DisparityP2;
+  using test::DisparityP4;
+  const auto edge = [](DisparityConfig c, int k) {
+    c.edge_candidates = k;
+    return c;
+  };
+  SECTION("P = 1, d 0..5 from 1 candidate, opencv") {
+    check_stage<Vdisparity_p1, DisparityP1>(edge(opencv(32, 13, 0), 1));
+  }
+  SECTION("P = 1, d 3..8 from 3, thesis, uniqueness 20") {
+    auto c = thesis(20, 11, 3);
+    c.uniqueness_ratio = 20;
+    check_stage<Vdisparity_p1, DisparityP1>(edge(c, 3));
+  }
+  SECTION("P = 2, d 1..6 from 2, opencv") {
+    check_stage<Vdisparity_p2, DisparityP2>(edge(opencv(32, 16, 1), 2));
+  }
+  SECTION("P = 2, d 5..8 (4 of 6) from 3, thesis, sub-pixel") {
+    auto c = thesis(24, 16, 5);
+    c.num_disp = 4;
+    c.subpixel = true;
+    check_stage<Vdisparity_p2, DisparityP2>(edge(c, 3));
+  }
+  SECTION("P = 4, d 2..6 from 2, opencv") {
+    check_stage<Vdisparity_p4, DisparityP4>(edge(opencv(32, 10, 2), 2));
+  }
+  SECTION("P = 4, d 0..4 from 4, thesis") {
+    check_stage<Vdisparity_p4, DisparityP4>(edge(thesis(32, 9, 0), 4));
+  }
+  SECTION("P = 4, edge above the candidates: the blind band of cv::StereoBM") {
+    check_stage<Vdisparity_p4, DisparityP4>(edge(opencv(32, 11, 1), 9));
+  }
+}
+
 namespace {
 
 /// A malformed frame followed by a good one: both flag the error and agree cycle for cycle,

@@ -24,4 +24,5 @@ verilator --binary --timing -Wno-fatal -Wno-lint -Wno-style --top-module tb_disp
   +height="$(field height)" +dmin="$(field dmin)" +num_disp="$(field num_disp)" \
   +prefilter="$(field prefilter)" +cap="$(field prefilter_cap)" +sad_limit="$(field sad_limit)" \
   +texture="$(field texture_threshold)" +uniqueness="$(field uniqueness_ratio)" \
-  +subpixel="$(field subpixel)" +opencv_invalid="$(field opencv_invalid)"
+  +subpixel="$(field subpixel)" +opencv_invalid="$(field opencv_invalid)" \
+  +edge="$(field edge_candidates)"

@@ -5,7 +5,8 @@
 `default_nettype none
 
 // Run with the set's manifest.json config as plusargs: +vectors=<set folder> +width +height
-// +dmin +num_disp +prefilter +cap +sad_limit +texture +uniqueness +subpixel +opencv_invalid.
+// +dmin +num_disp +prefilter +cap +sad_limit +texture +uniqueness +subpixel +opencv_invalid
+// +edge (edge_candidates).
 // Parameters: config.ppc, max_width_px, max_height, window, num_disp (built candidates) and the
 // hex files' meta.beats (all three files of a set have W * H / Ppc beats).
 module tb_disparity_replay #(
@@ -27,7 +28,7 @@ module tb_disparity_replay #(
   logic [OutW+1:0]  exp_mem [Beats];
   string dir;
   int unsigned width, height, dmin, num_disp, prefilter, cap, sad_limit, texture, uniqueness;
-  int unsigned subpixel, opencv_invalid;
+  int unsigned subpixel, opencv_invalid, edge_cand;
   initial begin
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
     if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
@@ -36,9 +37,10 @@ module tb_disparity_replay #(
         !$value$plusargs("sad_limit=%d", sad_limit) || !$value$plusargs("texture=%d", texture) ||
         !$value$plusargs("uniqueness=%d", uniqueness) ||
         !$value$plusargs("subpixel=%d", subpixel) ||
-        !$value$plusargs("opencv_invalid=%d", opencv_invalid))
+        !$value$plusargs("opencv_invalid=%d", opencv_invalid) ||
+        !$value$plusargs("edge=%d", edge_cand))
       $fatal(1, "give the set's config: +width +height +dmin +num_disp +prefilter +cap ",
-             "+sad_limit +texture +uniqueness +subpixel +opencv_invalid");
+             "+sad_limit +texture +uniqueness +subpixel +opencv_invalid +edge");
     if (width * height / Ppc != Beats)
       $fatal(1, "%0d x %0d at %0d px per beat is not %0d beats", width, height, Ppc, Beats);
     $readmemh({dir, "/left.hex"}, l_mem);
@@ -84,6 +86,7 @@ module tb_disparity_replay #(
     .cfg_num_disp_i(NumW'(num_disp)), .cfg_prefilter_i(prefilter != 0), .cfg_cap_i(6'(cap)),
     .cfg_sad_limit_i(sad_limit), .cfg_texture_i(texture), .cfg_uniqueness_i(8'(uniqueness)),
     .cfg_subpixel_i(subpixel != 0), .cfg_opencv_invalid_i(opencv_invalid != 0),
+    .cfg_edge_i(NumW'(edge_cand)),
     .l_valid_i(l_valid), .l_ready_o(l_ready), .l_data_i(l_beat[BeatW-1:0]),
     .l_sof_i(l_beat[BeatW]), .l_eol_i(l_beat[BeatW+1]),
     .r_valid_i(r_valid), .r_ready_o(r_ready), .r_data_i(r_beat[BeatW-1:0]),
