@@ -7,6 +7,7 @@
 #include "hls/disparity/disparity.hpp"
 #include "hls/labelling/labelling.hpp"
 #include "hls/pipeline/frame_check.hpp"
+#include "hls/pipeline/pipeline_config.hpp"
 #include "hls/pipeline/pipeline_params.hpp"
 #include "hls/pipeline/pipeline_result.hpp"
 #include "hls/rectify/map_grid.hpp"
@@ -15,36 +16,6 @@
 #include "hls/warning/warning.hpp"
 
 namespace scw::hls::pipeline {
-
-/// The run-time settings of every stage (the RTL top's cfg ports), stable while frames stream.
-/// Width and height are the frame's for every stage; the disparity and labelling sizes and the
-/// warning stage's road_height are taken from here, as the RTL top wires them.
-struct PipelineConfig {
-  int width = 0, height = 0;
-  int lead_rows = 1;  // the rectifiers' D
-  disparity::DisparityConfig disparity;
-  road::RoadConfig road;
-  labelling::LabellingConfig labelling;
-  warning::WarningConfig warning;
-
-  disparity::DisparityConfig disparity_config() const {
-    auto c = disparity;
-    c.width = width;
-    c.height = height;
-    return c;
-  }
-  labelling::LabellingConfig labelling_config() const {
-    auto c = labelling;
-    c.width = width;
-    c.height = height;
-    return c;
-  }
-  warning::WarningConfig warning_config() const {
-    auto c = warning;
-    c.road_height = true;  // the top's warning stage measures heights above the road's lines
-    return c;
-  }
-};
 
 /// Every register and RAM of the top: one object per stage, kept between calls as the
 /// hardware keeps them between frames. Without the optional ground filter (scw_pipeline has

@@ -371,16 +371,16 @@ using Rows = std::vector<std::vector<std::string>>;
 std::vector<std::string> object_row(std::size_t frame, std::size_t line, std::uint16_t label,
                                     const Object& b) {
   std::vector<std::string> r = {std::to_string(frame), std::to_string(line), std::to_string(label)};
-  sim::labelling_word::for_each(sim::labelling_word::kObjectFields,
-                                [&](const auto& f) { r.push_back(std::to_string(b.*f.member)); });
+  sim::words::for_each(sim::labelling_word::kObjectFields,
+                       [&](const auto& f) { r.push_back(std::to_string(b.*f.member)); });
   return r;
 }
 
 /// One expected_status.csv row: the frame, its status word's line in expected.hex, its fields.
 std::vector<std::string> status_row(std::size_t frame, std::size_t line, const FrameStatus& s) {
   std::vector<std::string> r = {std::to_string(frame), std::to_string(line)};
-  sim::labelling_word::for_each(sim::labelling_word::kStatusFields,
-                                [&](const auto& f) { r.push_back(std::to_string(s.*f.member)); });
+  sim::words::for_each(sim::labelling_word::kStatusFields,
+                       [&](const auto& f) { r.push_back(std::to_string(s.*f.member)); });
   return r;
 }
 
@@ -454,17 +454,10 @@ LabellingSetSummary write_labelling_set(const LabellingPreset& p,
 
 nlohmann::json labelling_word_layout() {
   nlohmann::json l = stream_beat_layout(Layout::kPayloadBits);
-  auto fields = [](const auto& table) {
-    nlohmann::json v = nlohmann::json::array({{{"name", "is_status"}, {"lsb", 0}, {"bits", 1}}});
-    int at = 1;
-    sim::labelling_word::for_each(table, [&](const auto& f) {
-      v.push_back({{"name", f.name}, {"lsb", at}, {"bits", f.bits}});
-      at += f.bits;
-    });
-    return v;
-  };
-  l["object_fields"] = fields(sim::labelling_word::kObjectFields);
-  l["status_fields"] = fields(sim::labelling_word::kStatusFields);
+  const nlohmann::json is_status =
+      nlohmann::json::array({{{"name", "is_status"}, {"lsb", 0}, {"bits", 1}}});
+  l["object_fields"] = field_layout(sim::labelling_word::kObjectFields, 1, is_status);
+  l["status_fields"] = field_layout(sim::labelling_word::kStatusFields, 1, is_status);
   return l;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sim/words/bits.hpp"
+#include "sim/words/fields.hpp"
 
 namespace scw::vectors {
 
@@ -44,6 +45,20 @@ struct Manifest {
 nlohmann::json pixel_beat_layout(int pixels_per_beat, int pixel_bits);
 /// Layout description of a non-image beat `{last, data}` for add_hex().
 nlohmann::json stream_beat_layout(int data_bits);
+
+/// A word's field table (sim/words/fields.hpp) as layout entries `{name, lsb, bits[, signed]}`,
+/// the fields from bit `lsb` up, appended to `entries` (fields below them, written by hand).
+template <typename Table>
+nlohmann::json field_layout(const Table& table, int lsb = 0,
+                            nlohmann::json entries = nlohmann::json::array()) {
+  sim::words::for_each(table, [&](const auto& f) {
+    nlohmann::json e = {{"name", f.name}, {"lsb", lsb}, {"bits", f.bits}};
+    if (f.kSigned) e["signed"] = true;
+    entries.push_back(std::move(e));
+    lsb += f.bits;
+  });
+  return entries;
+}
 
 /// The exact text finish() writes: 2-space indent, fixed key order, trailing newline.
 std::string manifest_text(const Manifest& manifest);

@@ -322,15 +322,7 @@ std::vector<ResultPacket> run_model(const WarningConfig& cfg, const std::vector<
 
 nlohmann::json out_layout() {
   nlohmann::json l = stream_beat_layout(OutLayout::kPayloadBits);
-  nlohmann::json f = nlohmann::json::array();
-  int at = 0;
-  sim::words::for_each(sim::warning_word::kResultFields, [&](const auto& x) {
-    nlohmann::json e = {{"name", x.name}, {"lsb", at}, {"bits", x.bits}};
-    if (x.kSigned) e["signed"] = true;
-    f.push_back(std::move(e));
-    at += x.bits;
-  });
-  l["result_fields"] = f;
+  l["result_fields"] = field_layout(sim::warning_word::kResultFields);
   l["severity_codes"] = {{"none", 0}, {"low", 1}, {"medium", 2}, {"high", 3}};
   return l;
 }

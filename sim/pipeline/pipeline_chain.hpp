@@ -355,8 +355,7 @@ class PipelineChain {
                   "the warning stage's distance rule reads kRuleAreaBits of an object's area: a "
                   "labelling build of at most 2^20 - 1 pixels");
     // The top's warning stage always measures heights above the road stage's lines.
-    hls::warning::WarningConfig cfg = setup_.warning;
-    cfg.road_height = true;
+    const hls::warning::WarningConfig cfg = setup_.warning_config();
     if (e == Engine::cpp) {
       hls::warning::check_config<Params>(cfg);
       sim_.add<JoinComponent<WarningRoadModel<Params>>>("warning", WarningRoadModel<Params>(cfg),

@@ -12,6 +12,7 @@
 #include "hls/disparity/disparity_params.hpp"
 #include "hls/ground/ground_params.hpp"
 #include "hls/labelling/labelling_params.hpp"
+#include "hls/pipeline/pipeline_config.hpp"
 #include "hls/rectify/map_grid.hpp"
 #include "hls/rectify/rectify_params.hpp"
 #include "hls/road/road_params.hpp"
@@ -55,35 +56,15 @@ struct PipelineDepths {
   int line = 4;  // road lines: frames in flight between the road stage and the warning stage
 };
 
-/// One run's settings. Width and height are the frame's for every stage.
-struct PipelineSetup {
-  int width = 0, height = 0;
-  int lead_rows = 1;  // the rectifiers' D (host/rectify plans it from the maps)
-  hls::disparity::DisparityConfig disparity;  // width and height are taken from above
-  hls::labelling::LabellingConfig labelling;  // width and height are taken from above
-  hls::warning::WarningConfig warning;
-  /// The road stage (docs/road.md). The default configuration removes nothing: its nominal
-  /// road is flat at 0 and no fitted slope is plausible (host/road/setup.hpp makes a real one).
-  hls::road::RoadConfig road;
+/// One run's settings: the stages' (hls::pipeline::PipelineConfig, the top's cfg ports; width
+/// and height are the frame's for every stage), and what the simulator adds around them.
+struct PipelineSetup : hls::pipeline::PipelineConfig {
   /// Ground removal (thesis 6.2) between the disparity and labelling stages, at one pixel per
   /// beat only; absent: no filter, the graph of scw_pipeline.
   std::optional<hls::ground::GroundConfig> ground;
   int knot_cols = 0, knot_rows = 0;  // each camera's knot grid, row-major
   std::vector<hls::rectify::KnotPoint> left_knots, right_knots;
   PipelineDepths depths;
-
-  hls::disparity::DisparityConfig disparity_config() const {
-    auto c = disparity;
-    c.width = width;
-    c.height = height;
-    return c;
-  }
-  hls::labelling::LabellingConfig labelling_config() const {
-    auto c = labelling;
-    c.width = width;
-    c.height = height;
-    return c;
-  }
 };
 
 /// Throws std::invalid_argument naming the first setting the build cannot take.

@@ -19,7 +19,6 @@ namespace scw::sim::words {
 /// read back); an enum is its underlying code.
 template <typename S, typename T>
 struct Field {
-  using struct_type = S;
   using value_type = T;
   const char* name;
   int bits;

@@ -19,7 +19,6 @@ using hls::labelling::FrameStatus;
 using hls::labelling::Object;
 
 using words::Field;
-using words::for_each;
 
 /// An object word after its is_status bit, least significant first: scw_pkg's label_desc_t
 /// read from its last member up.

@@ -22,19 +22,6 @@ namespace hostp = scw::host::pipeline;
 using scw::sim::Engine;
 using scw::sim::PipelineEngines;
 
-/// The C++ chain's settings as the top's configuration (the same fields, by the RTL's names).
-hp::PipelineConfig top_config(const scw::sim::PipelineSetup& s) {
-  hp::PipelineConfig c;
-  c.width = s.width;
-  c.height = s.height;
-  c.lead_rows = s.lead_rows;
-  c.disparity = s.disparity;
-  c.road = s.road;
-  c.labelling = s.labelling;
-  c.warning = s.warning;
-  return c;
-}
-
 /// `frames` pairs through both, compared frame by frame. `road`: a street whose road the stage
 /// fits and removes (frame-level state that the top carries from call to call); otherwise a
 /// textured background and a box, the right camera shifted half a pixel so the rectifiers work.
@@ -74,7 +61,7 @@ void check_top_equals_chain(int frames, bool road) {
   chain.run(static_cast<std::size_t>(frames), 400000);
   REQUIRE(chain.results().size() == static_cast<std::size_t>(frames));
 
-  auto stages = std::make_unique<hp::PipelineStages<Build>>(top_config(setup));
+  auto stages = std::make_unique<hp::PipelineStages<Build>>(setup);  // its stage settings
   hp::pipeline_load_knots(*stages, setup.left_knots.data(), setup.right_knots.data(),
                           setup.knot_cols, setup.knot_rows);
   constexpr int kFrame = Build::kMaxWidthPx / P * Build::kMaxHeight;
