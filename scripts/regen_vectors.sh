@@ -29,11 +29,11 @@ for preset in shift rotation barrel chessboard_left chessboard_right; do
 done
 
 # disparity/<preset>: a 64 x 24 random texture pair with known shifts (N = 5, d 0..15, thesis
-# mode) and a 96 x 48 Tsukuba crop (N = 9, d 0..15, opencv mode), P = 2, from the C++ model,
-# checked against the direct reference; CTest replays both against scw_disparity
-# (tests/disparity/tb/).
+# mode), a 96 x 48 Tsukuba crop (N = 9, d 0..15, opencv mode) and the same crop with the left
+# edge band (edge_candidates 4), P = 2, from the C++ model, checked against the direct
+# reference; CTest replays each against scw_disparity (tests/disparity/tb/).
 mkdir -p "$out/disparity"
-for preset in texture tsukuba; do
+for preset in texture tsukuba tsukuba_edge; do
   "$scw" vectors disparity --preset "$preset" --data-dir "$root/data/tsukuba" \
     --out "$tmp/disparity_$preset" >/dev/null
   rm -rf "$out/disparity/$preset"

@@ -89,6 +89,15 @@ Frame tsukuba(const std::filesystem::path& dir) {
   return f;
 }
 
+/// The Tsukuba crop with the left edge band: its columns 7 .. 18 decided among the candidates
+/// whose window fits the right image, from 4 of them on (DisparityConfig::edge_candidates).
+Frame tsukuba_edge(const std::filesystem::path& dir) {
+  Frame f = tsukuba(dir);
+  f.cfg.edge_candidates = 4;
+  f.description += "; the left edge band decided from 4 candidates (edge_candidates 4)";
+  return f;
+}
+
 /// How many of the computed pixels find the frame's true disparity.
 void count_known_shifts(const Frame& f, const std::vector<std::uint16_t>& ref,
                         std::uint16_t invalid, DisparitySetSummary& sum) {
@@ -179,15 +188,16 @@ DisparitySetSummary run(const Frame& f, const std::filesystem::path& dir) {
 }  // namespace
 
 const std::vector<std::string>& disparity_presets() {
-  static const std::vector<std::string> kNames = {"texture", "tsukuba"};
+  static const std::vector<std::string> kNames = {"texture", "tsukuba", "tsukuba_edge"};
   return kNames;
 }
 
 DisparityFrame disparity_preset(const std::string& name, const std::filesystem::path& data_dir) {
   if (name == "texture") return synthetic();
   if (name == "tsukuba") return tsukuba(data_dir);
+  if (name == "tsukuba_edge") return tsukuba_edge(data_dir);
   throw std::invalid_argument("vectors disparity: no preset '" + name +
-                              "' (there are: texture, tsukuba)");
+                              "' (there are: texture, tsukuba, tsukuba_edge)");
 }
 
 DisparitySetSummary write_disparity_set(const DisparityFrame& f, const std::filesystem::path& dir) {

@@ -26,6 +26,8 @@ package scw_pkg;
   // the top's result word, the frame result and both cameras' input flags
   // (sim/words/pipeline_pack.hpp). Verilator exports them (V<prefix>_scw_pkg), and
   // sim/builds/pipeline_small_rtl.hpp checks them against the C++ packs.
+  // ObjWordBits is label_desc_t's width plus is_status (Yosys 0.23 cannot take $bits of a type
+  // here; scw_labelling checks the two agree at elaboration).
   localparam int unsigned ObjWordBits    /*verilator public*/ =
       1 + AreaBits + 10 * CoordBits + 11 * SumBits;
   localparam int unsigned ResultWordBits /*verilator public*/ = 2 + 5 + 3 * 16 + 32 + 7 * 16;

@@ -1000,7 +1000,6 @@ module scw_labelling #(
   localparam int unsigned AreaOutW  = scw_pkg::AreaBits;
   localparam int unsigned CoordOutW = scw_pkg::CoordBits;
   localparam int unsigned SumOutW   = scw_pkg::SumBits;
-  localparam int unsigned StatusW   = AreaOutW + 3;  // scw_pkg::label_status_t
   scw_pkg::label_status_t out_status;
   always_comb begin
     out_status                 = '0;
@@ -1010,6 +1009,9 @@ module scw_labelling #(
     out_status.stream_error    = emit_err_q;
   end
   scw_pkg::label_desc_t out_desc;
+  if ($bits(out_desc) + 1 != OutW) begin : gen_bad_word
+    $error("scw_labelling: scw_pkg::ObjWordBits is not label_desc_t's width plus is_status");
+  end
   always_comb begin
     int unsigned at;
     out_desc = '0;
@@ -1047,7 +1049,7 @@ module scw_labelling #(
     if (emit_status) begin
       out_data_d = '0;
       out_data_d[0] = 1'b1;
-      out_data_d[StatusW:1] = out_status;
+      out_data_d[$bits(out_status):1] = out_status;
     end
     if (out_load) out_valid_d = 1'b1;
   end

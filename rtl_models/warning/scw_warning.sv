@@ -104,13 +104,12 @@ module scw_warning #(
   assign road_w = need_road ? {road_b_i, road_a_i} : road_q;
 
   // ---- input word ---------------------------------------------------------------------------
-  localparam int unsigned StatusW = scw_pkg::AreaBits + 3;  // scw_pkg::label_status_t
   scw_pkg::label_desc_t desc;
   scw_pkg::label_status_t st;
   logic in_status;
   assign in_status = in_data_i[0];
   assign desc = in_data_i[InW-1:1];
-  assign st   = in_data_i[StatusW:1];
+  assign st   = in_data_i[$bits(st):1];
 
   // Fields in result order (closest_x lowest); a status word puts {flags, objects} there.
   logic [FW-1:0] fields;
