@@ -30,7 +30,15 @@ package scw_pkg;
   // here; scw_labelling checks the two agree at elaboration).
   localparam int unsigned ObjWordBits    /*verilator public*/ =
       1 + AreaBits + 10 * CoordBits + 11 * SumBits;
-  localparam int unsigned ResultWordBits /*verilator public*/ = 2 + 5 + 3 * 16 + 32 + 7 * 16;
+  // The warning stage's frame result, warning_result_t below: its severity, counts and distance
+  // (sim/words/warning_pack.hpp's kResultFields reads these numbers too).
+  localparam int unsigned SeverityBits   /*verilator public*/ = 2;
+  localparam int unsigned CountBits      /*verilator public*/ = 16;
+  localparam int unsigned DistMmBits     /*verilator public*/ = 32;
+  // Five flags, three counts, the distance and the deciding object's seven coordinates
+  // (scw_warning checks at elaboration that this is warning_result_t's width).
+  localparam int unsigned ResultWordBits /*verilator public*/ =
+      SeverityBits + 5 + 3 * CountBits + DistMmBits + 7 * CoordBits;
   localparam int unsigned PipeResultBits /*verilator public*/ = ResultWordBits + 2;
   // One labelling object descriptor: the object word of sim/words/labelling_pack.hpp without its
   // is_status bit, declared most significant first (area the lowest bits, sum_dd the highest).
@@ -66,4 +74,29 @@ package scw_pkg;
     logic                tile_overflow;
     logic [AreaBits-1:0] objects;
   } label_status_t;
+  // The deciding object's coordinates in a frame result; a status-decided frame has none.
+  typedef struct packed {
+    logic [CoordBits-1:0] y_max;
+    logic [CoordBits-1:0] y_min;
+    logic [CoordBits-1:0] x_max;
+    logic [CoordBits-1:0] x_min;
+    logic [CoordBits-1:0] d_max;
+    logic [CoordBits-1:0] closest_y;
+    logic [CoordBits-1:0] closest_x;
+  } result_box_t;
+  // The warning stage's frame result (hls::warning::FrameResult), most significant first:
+  // severity the lowest bits, y_max the highest. distance_mm is two's complement.
+  typedef struct packed {
+    result_box_t           box;
+    logic [DistMmBits-1:0] distance_mm;
+    logic [CountBits-1:0]  index;
+    logic [CountBits-1:0]  obstacles;
+    logic [CountBits-1:0]  objects;
+    logic                  stream_error;
+    logic                  object_overflow;
+    logic                  tile_overflow;
+    logic                  too_close;
+    logic                  in_tunnel;
+    logic [SeverityBits-1:0] severity;
+  } warning_result_t;
 endpackage

@@ -78,7 +78,8 @@ module scw_warning #(
   localparam int unsigned Stages    = Latency - 1;      // R1 .. R(RL), S0 .. , then the fold
   localparam int unsigned ObjStages = Stages - RuleLatency;  // S0 .. S(ObjStages-1)
   localparam int unsigned AddrW  = $clog2(TableSize);
-  localparam int unsigned FW     = 7 * 16;        // the fields a result reports
+  localparam int unsigned FW     = 7 * scw_pkg::CoordBits;  // the result_box_t a result reports
+  localparam int unsigned CW     = scw_pkg::CountBits;      // objects, obstacles, index
   localparam int unsigned DW     = 29;            // distances, signed
 
   if (MaxDisparityPx < 2 || MaxDisparityPx > 2048) begin : gen_bad
@@ -111,12 +112,21 @@ module scw_warning #(
   assign desc = in_data_i[InW-1:1];
   assign st   = in_data_i[$bits(st):1];
 
-  // Fields in result order (closest_x lowest); a status word puts {flags, objects} there.
+  // The fields a result reports (scw_pkg::result_box_t); a status word puts {flags, objects}
+  // in their place.
+  scw_pkg::result_box_t box;
+  always_comb begin
+    box.y_max     = desc.y_max;
+    box.y_min     = desc.y_min;
+    box.x_max     = desc.x_max;
+    box.x_min     = desc.x_min;
+    box.d_max     = desc.d_max;
+    box.closest_y = desc.closest_y;
+    box.closest_x = desc.closest_x;
+  end
   logic [FW-1:0] fields;
   assign fields = in_status
-      ? FW'({st.stream_error, st.object_overflow, st.tile_overflow, 32'(st.objects)})
-      : {16'(desc.y_max), 16'(desc.y_min), 16'(desc.x_max), 16'(desc.x_min), 16'(desc.d_max),
-         16'(desc.closest_y), 16'(desc.closest_x)};
+      ? FW'({st.stream_error, st.object_overflow, st.tile_overflow, st.objects}) : box;
 
   logic [15:0] d_limit_q;
   always_ff @(posedge clk_i) d_limit_q <= cfg_d_limit_q4_i;
@@ -226,21 +236,25 @@ module scw_warning #(
   // ---- fold ---------------------------------------------------------------------------------
   // The accumulator is the model's FrameResult acc_ (without the flags, which only the closing
   // word sets) plus whether an obstacle was seen and the deciding one's judged distance.
-  logic [1:0] sev_q, sev_d, sev_f;
+  logic [scw_pkg::SeverityBits-1:0] sev_q, sev_d, sev_f;
   logic tun_q, tun_d, tun_f, tc_q, tc_d, tc_f, best_q, best_d;
-  logic [15:0] objs_q, objs_d, objs_f, obst_q, obst_d, obst_f, idx_q, idx_d, idx_f;
+  logic [CW-1:0] objs_q, objs_d, objs_f, obst_q, obst_d, obst_f, idx_q, idx_d, idx_f;
   logic signed [DW-1:0] dist_q, dist_d, dist_f, dj_q, dj_d;
   logic [FW-1:0] fld_q, fld_d, fld_f;
   logic out_valid_q, out_valid_d;
-  logic [OutW-1:0] out_q, out_d;
+  logic [OutW-1:0] out_q;
+  scw_pkg::warning_result_t out_d;
+  if ($bits(out_d) != OutW) begin : gen_bad_result
+    $error("scw_warning: scw_pkg::ResultWordBits is not warning_result_t's width");
+  end
 
   logic w_valid, w_obj, better, upd, close, st_err;
-  logic [31:0] st_objects;
+  logic [scw_pkg::AreaBits-1:0] st_objects;
   logic [2:0] st_flags;
   assign w_valid    = valid_q[Stages-1];
   assign w_obj      = w_valid && !w_status;
-  assign st_objects = w_fields[31:0];
-  assign st_flags   = w_fields[34:32];  // {stream_error, object_overflow, tile_overflow}
+  assign st_objects = w_fields[scw_pkg::AreaBits-1:0];
+  assign st_flags   = w_fields[scw_pkg::AreaBits +: 3];  // {stream_error, object_overflow, tile_overflow}
 
   // Which obstacle decides, as one unsigned compare (a single carry chain into the enables of
   // the whole accumulator): severity above the judged distance, whose sign bit is flipped (signed
@@ -253,11 +267,11 @@ module scw_warning #(
     better = !best_q || w_key > key_q;
     upd    = w_obj && w_obst && better;
     close  = w_valid && (w_status || w_last);
-    st_err = st_flags[2] || !w_last || st_objects != {16'b0, objs_q};
+    st_err = st_flags[2] || !w_last || st_objects != scw_pkg::AreaBits'(objs_q);
 
     // _f: the accumulator with the word folded in
-    objs_f = objs_q + 16'(w_obj);
-    obst_f = obst_q + 16'(w_obj && w_obst);
+    objs_f = objs_q + CW'(w_obj);
+    obst_f = obst_q + CW'(w_obj && w_obst);
     sev_f  = upd ? w_sev : sev_q;
     tun_f  = upd ? w_tun : tun_q;
     tc_f   = upd ? w_tc : tc_q;
@@ -267,9 +281,17 @@ module scw_warning #(
     dj_d   = upd ? w_dj : dj_q;
 
     // the frame's result, taken when it closes
-    out_d = {fld_f, {{(32 - DW){dist_f[DW-1]}}, dist_f}, idx_f, obst_f, objs_f,
-             w_status ? st_err : 1'b1, w_status && st_flags[1], w_status && st_flags[0], tc_f,
-             tun_f, sev_f};
+    out_d.box             = fld_f;
+    out_d.distance_mm     = {{(scw_pkg::DistMmBits - DW){dist_f[DW-1]}}, dist_f};
+    out_d.index           = idx_f;
+    out_d.obstacles       = obst_f;
+    out_d.objects         = objs_f;
+    out_d.stream_error    = w_status ? st_err : 1'b1;
+    out_d.object_overflow = w_status && st_flags[1];
+    out_d.tile_overflow   = w_status && st_flags[0];
+    out_d.too_close       = tc_f;
+    out_d.in_tunnel       = tun_f;
+    out_d.severity        = sev_f;
     out_valid_d = close || (out_valid_q && !out_ready_i);
 
     // a closed frame leaves the next one FrameResult{}

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // The warning stage's output word, {last, payload}: what the RTL's out_data_o carries and the
 // golden vectors store. Its fields are listed once, in kResultFields: packing, unpacking and
-// the vector sets' layout JSON and CSV columns walk it. The RTL builds the same word in
-// scw_warning.sv (out_d) at these widths, which it still writes itself; the total is
-// scw_pkg::ResultWordBits, static_asserted against kPayloadBits (sim/builds/).
+// the vector sets' layout JSON and CSV columns walk it. The widths are rtl_models/common/
+// scw_pkg.sv's (scw_pkg.hpp is generated from it), where the RTL's word is warning_result_t;
+// the total is scw_pkg::ResultWordBits, static_asserted against kPayloadBits (sim/builds/).
 #pragma once
 
 #include <cstdint>
 #include <tuple>
 
 #include "hls/warning/warning_params.hpp"
+#include "scw_pkg.hpp"
 #include "sim/words/fields.hpp"
 #include "sim/words/pack.hpp"
 
@@ -20,24 +21,26 @@ using hls::warning::Severity;
 using words::Field;
 
 /// The payload, least significant first. distance_mm is two's complement.
+inline constexpr int kCount = pkg::CountBits;
+inline constexpr int kCoord = pkg::CoordBits;
 inline constexpr auto kResultFields = std::make_tuple(
-    Field<FrameResult, Severity>{"severity", 2, &FrameResult::severity},
+    Field<FrameResult, Severity>{"severity", pkg::SeverityBits, &FrameResult::severity},
     Field<FrameResult, bool>{"in_tunnel", 1, &FrameResult::in_tunnel},
     Field<FrameResult, bool>{"too_close", 1, &FrameResult::too_close},
     Field<FrameResult, bool>{"tile_overflow", 1, &FrameResult::tile_overflow},
     Field<FrameResult, bool>{"object_overflow", 1, &FrameResult::object_overflow},
     Field<FrameResult, bool>{"stream_error", 1, &FrameResult::stream_error},
-    Field<FrameResult, std::uint16_t>{"objects", 16, &FrameResult::objects},
-    Field<FrameResult, std::uint16_t>{"obstacles", 16, &FrameResult::obstacles},
-    Field<FrameResult, std::uint16_t>{"index", 16, &FrameResult::index},
-    Field<FrameResult, std::int32_t>{"distance_mm", 32, &FrameResult::distance_mm},
-    Field<FrameResult, std::uint16_t>{"closest_x", 16, &FrameResult::closest_x},
-    Field<FrameResult, std::uint16_t>{"closest_y", 16, &FrameResult::closest_y},
-    Field<FrameResult, std::uint16_t>{"d_max", 16, &FrameResult::d_max},
-    Field<FrameResult, std::uint16_t>{"x_min", 16, &FrameResult::x_min},
-    Field<FrameResult, std::uint16_t>{"x_max", 16, &FrameResult::x_max},
-    Field<FrameResult, std::uint16_t>{"y_min", 16, &FrameResult::y_min},
-    Field<FrameResult, std::uint16_t>{"y_max", 16, &FrameResult::y_max});
+    Field<FrameResult, std::uint16_t>{"objects", kCount, &FrameResult::objects},
+    Field<FrameResult, std::uint16_t>{"obstacles", kCount, &FrameResult::obstacles},
+    Field<FrameResult, std::uint16_t>{"index", kCount, &FrameResult::index},
+    Field<FrameResult, std::int32_t>{"distance_mm", pkg::DistMmBits, &FrameResult::distance_mm},
+    Field<FrameResult, std::uint16_t>{"closest_x", kCoord, &FrameResult::closest_x},
+    Field<FrameResult, std::uint16_t>{"closest_y", kCoord, &FrameResult::closest_y},
+    Field<FrameResult, std::uint16_t>{"d_max", kCoord, &FrameResult::d_max},
+    Field<FrameResult, std::uint16_t>{"x_min", kCoord, &FrameResult::x_min},
+    Field<FrameResult, std::uint16_t>{"x_max", kCoord, &FrameResult::x_max},
+    Field<FrameResult, std::uint16_t>{"y_min", kCoord, &FrameResult::y_min},
+    Field<FrameResult, std::uint16_t>{"y_max", kCoord, &FrameResult::y_max});
 
 inline constexpr int kPayloadBits = words::bits_of(kResultFields);
 static_assert(words::fits_types(kResultFields), "each field fits its C++ member");

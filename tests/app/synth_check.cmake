@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # Runs `scw synth` and checks its result (cmake -P; used by synth.cmake). Variables:
 #   SCW   the scw executable
-#   MODE  small: scw_warning and scw_rectify at the small build, JSON checked;
+#   MODE  small: scw_road and scw_rectify at the small build (the two quickest stages), JSON
+#         checked;
 #         unknown_config: must fail and name every config
 #   WORK  a folder of its own (emptied first), so tests can run side by side
 cmake_minimum_required(VERSION 3.19)  # string(JSON)
@@ -35,7 +36,7 @@ if(NOT MODE STREQUAL "small")
   message(FATAL_ERROR "synth_check.cmake: unknown MODE '${MODE}'")
 endif()
 
-execute_process(COMMAND "${SCW}" synth --config small --ppc 1 --modules scw_warning,scw_rectify
+execute_process(COMMAND "${SCW}" synth --config small --ppc 1 --modules scw_road,scw_rectify
                         --json synth.json
                 WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
@@ -63,7 +64,7 @@ expect_eq("number of modules" "${n}" "2")
 
 # The pipeline's order, whatever order --modules named them in.
 set(i 0)
-foreach(module scw_rectify scw_warning)
+foreach(module scw_rectify scw_road)
   string(JSON m GET "${doc}" modules ${i})
   string(JSON name GET "${m}" module)
   expect_eq("modules[${i}].module" "${name}" "${module}")
@@ -132,12 +133,12 @@ foreach(key Ppc MaxWidthPx MaxHeight Rows)
 endforeach()
 string(JSON ppc_param GET "${p}" Ppc)
 expect_eq("scw_rectify.params.Ppc" "${ppc_param}" "1")
-string(JSON v GET "${doc}" modules 1 params MaxDisparityPx)
+string(JSON v GET "${doc}" modules 1 params MaxWidthPx)
 if(NOT v MATCHES "^[1-9][0-9]*$")
-  message(FATAL_ERROR "scw_warning.params.MaxDisparityPx = '${v}'")
+  message(FATAL_ERROR "scw_road.params.MaxWidthPx = '${v}'")
 endif()
 
-foreach(log small_p1_scw_rectify.log small_p1_scw_warning.log)
+foreach(log small_p1_scw_rectify.log small_p1_scw_road.log)
   if(NOT EXISTS "${WORK}/synth_logs/${log}")
     message(FATAL_ERROR "no Yosys log synth_logs/${log} beside the JSON")
   endif()

@@ -17,7 +17,7 @@ module tb_warning_replay #(
   parameter int unsigned WordsOut       = 1
 );
   localparam int unsigned InW  = scw_pkg::ObjWordBits;         // sim/words/labelling_pack.hpp: 897
-  localparam int unsigned OutW = 2 + 5 + 3 * 16 + 32 + 7 * 16;  // sim/words/warning_pack.hpp: 199
+  localparam int unsigned OutW = scw_pkg::ResultWordBits;  // sim/words/warning_pack.hpp
   localparam int unsigned Latency = 64 + 47;  // hls::warning::kLatency (kRuleLatency + 47)
   // Generous: the stage takes a word a clock unless its result waits; the source idles 1 clock
   // in 4 and the sink 3 in 7.
