@@ -4,13 +4,14 @@
 set -euo pipefail
 
 # cmake/g++/make/ninja: build; verilator + zlib1g-dev: RTL simulation with FST traces;
-# yosys: synthesis checks; libopencv-dev, libeigen3-dev: references and image I/O;
+# yosys: synthesis checks; iverilog: the 4-state replay of vector sets (scripts/replay.sh);
+# libopencv-dev, libeigen3-dev: references and image I/O;
 # catch2, libcli11-dev, nlohmann-json3-dev: tests, CLI, manifests; libssl-dev: SHA-256 of
 # golden vectors (OpenSSL's EVP, not a hand-written hash); git: cloning and CI; clang and its
 # runtime libraries (libFuzzer, AddressSanitizer; only recommended by clang, so named): fuzzing
 # the file parsers (scripts/fuzz.sh).
-packages=(cmake g++ make ninja-build pkg-config git verilator zlib1g-dev yosys libopencv-dev
-          libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libssl-dev clang libclang-rt-14-dev)
+packages=(cmake g++ make ninja-build pkg-config git verilator zlib1g-dev yosys iverilog
+          libopencv-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libssl-dev clang libclang-rt-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do

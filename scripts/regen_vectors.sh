@@ -74,3 +74,12 @@ for preset in street implausible; do
   rm -rf "$out/road/$preset"
   cp -r "$tmp/road_$preset" "$out/road/$preset"
 done
+
+# pipeline/small_street: the whole scw_pipeline top at the small build (P = 1), three 64 x 32
+# synthetic street frames back to back, raw pairs and knots in, every stream between the stages
+# and the frame results out; from the C++ chain, checked against the Verilated top; CTest
+# replays it in Verilator and Icarus (tests/pipeline/tb/).
+mkdir -p "$out/pipeline"
+"$scw" vectors pipeline --config small --frames 3 --out "$tmp/pipeline_small_street" >/dev/null
+rm -rf "$out/pipeline/small_street"
+cp -r "$tmp/pipeline_small_street" "$out/pipeline/small_street"

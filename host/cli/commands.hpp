@@ -26,5 +26,6 @@ void add_vectors_disparity_command(CLI::App& vectors);
 void add_vectors_labelling_command(CLI::App& vectors);  // `scw vectors labelling`
 void add_vectors_warning_command(CLI::App& vectors);    // `scw vectors warning`
 void add_vectors_road_command(CLI::App& vectors);       // `scw vectors road`
+void add_vectors_pipeline_command(CLI::App& vectors);   // `scw vectors pipeline`
 
 }  // namespace scw::cli

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   scw::cli::add_vectors_labelling_command(*app.get_subcommand("vectors"));
   scw::cli::add_vectors_warning_command(*app.get_subcommand("vectors"));
   scw::cli::add_vectors_road_command(*app.get_subcommand("vectors"));
+  scw::cli::add_vectors_pipeline_command(*app.get_subcommand("vectors"));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -15,6 +15,7 @@
 
 #include "hls/pipeline/pipeline_params.hpp"
 #include "host/synth/timing.hpp"
+#include "host/synth/top_params.hpp"
 
 namespace scw::host::synth {
 namespace {
@@ -53,19 +54,7 @@ std::vector<ModuleRun> modules_of() {
       {"scw_road",
        {{"Ppc", P::kPpc}, {"MaxWidthPx", P::kMaxWidthPx}, {"MaxHeight", P::kMaxHeight}}},
       {"scw_warning", {{"MaxDisparityPx", P::kMaxDisparityPx}}},
-      {kTop,
-       {{"Ppc", P::kPpc},
-        {"MaxWidthPx", P::kMaxWidthPx},
-        {"MaxHeight", P::kMaxHeight},
-        {"RectRows", P::kRectRows},
-        {"GridLog2", P::kGridLog2},
-        {"Window", P::kWindow},
-        {"NumDisp", P::kNumDisp},
-        {"MaxTilesX", P::kMaxTilesX},
-        {"MaxTilesY", P::kMaxTilesY},
-        {"LabelsPerTile", P::kLabelsPerTile},
-        {"MaxObjects", P::kMaxObjects},
-        {"MaxDisparityPx", P::kMaxDisparityPx}}},
+      {kTop, top_params<P>()},
   };
 }
 

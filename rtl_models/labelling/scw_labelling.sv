@@ -797,15 +797,17 @@ module scw_labelling #(
   logic m1_q, m1_d, old_hit_q, old_hit_d, r5_match, r6_match;
 
   // empty: no pixel (area and sums 0, minima at their largest, maxima 0, the first pixel last)
+  // The ones are sized replications: Yosys 0.23 writes '1 into a part-select at a variable
+  // offset as 1'b1 (only the field's lowest bit set).
   always_comb begin
     int unsigned at;
     empty = '0;
     at = AreaW;
-    empty[at +: PosXW] = '1;  at = at + 2 * PosXW;     // x_min
-    empty[at +: PosYW] = '1;  at = at + 2 * PosYW;     // y_min
-    empty[at +: DispW] = '1;  at = at + 2 * DispW;     // d_min
-    at = at + PosXW + PosYW;                            // closest
-    empty[at +: PosXW + PosYW] = '1;                    // first
+    empty[at +: PosXW] = {PosXW{1'b1}};  at = at + 2 * PosXW;  // x_min
+    empty[at +: PosYW] = {PosYW{1'b1}};  at = at + 2 * PosYW;  // y_min
+    empty[at +: DispW] = {DispW{1'b1}};  at = at + 2 * DispW;  // d_min
+    at = at + PosXW + PosYW;                                    // closest
+    empty[at +: PosXW + PosYW] = {(PosXW + PosYW){1'b1}};      // first
   end
 
   assign r5_match  = r5_valid_q && (r5_root_q == r3_root_q);

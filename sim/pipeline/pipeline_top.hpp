@@ -56,6 +56,22 @@ struct TopRunControl {
   std::int64_t every = 100000;  // cycles between progress calls
 };
 
+/// Every cfg_* port of scw_pipeline from `s`, checked as the chain checks it
+/// (std::invalid_argument). `VM` is the Verilated top, or anything with members named as the ports
+/// (the pipeline vector set records them so: host/vectors/pipeline_set.cpp).
+template <typename VM, typename Build>
+void drive_pipeline_cfg(VM& m, const PipelineSetup& s) {
+  check_setup<Build>(s);
+  const auto l = s.labelling_config();
+  hls::labelling::check_config<typename Build::labelling>(l);
+  hls::warning::check_config<typename Build::warning>(s.warning);
+  m.cfg_lead_i = static_cast<unsigned>(s.lead_rows < 0 ? 0 : s.lead_rows);
+  drive_disparity_cfg<VM, typename Build::disparity>(m, s.disparity_config());
+  drive_labelling_cfg(m, l);  // the top's width and height ports: the same frame
+  drive_warning_cfg(m, s.warning);
+  drive_road_config(m, s.road);
+}
+
 template <typename VM, typename Build>
 class PipelineTop : private RtlAdapter<VM> {
  public:
@@ -143,22 +159,13 @@ class PipelineTop : private RtlAdapter<VM> {
  private:
   /// Checks `s` and drives the static inputs, every stream idle, before reset.
   static void configure(VM& m, const PipelineSetup& s) {
-    check_setup<Build>(s);
     const PipelineDepths defaults;
     if (s.depths.raw != defaults.raw || s.depths.map != defaults.map ||
         s.depths.rect != defaults.rect || s.depths.disp != defaults.disp ||
         s.depths.obj != defaults.obj || s.depths.res != defaults.res ||
         s.depths.flag != defaults.flag)
       throw std::invalid_argument("the Verilated scw_pipeline is built with the default depths");
-    const auto u = [](int v) { return static_cast<unsigned>(v < 0 ? 0 : v); };
-    m.cfg_lead_i = u(s.lead_rows);
-    const auto l = s.labelling_config();
-    hls::labelling::check_config<typename Build::labelling>(l);
-    hls::warning::check_config<typename Build::warning>(s.warning);
-    drive_disparity_cfg<VM, typename Build::disparity>(m, s.disparity_config());
-    drive_labelling_cfg(m, l);  // the top's width and height ports: the same frame
-    drive_warning_cfg(m, s.warning);
-    drive_road_config(m, s.road);
+    drive_pipeline_cfg<VM, Build>(m, s);
     m.run_i = 0;
     m.l_valid_i = 0;
     m.r_valid_i = 0;

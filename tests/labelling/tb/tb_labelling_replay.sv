@@ -10,29 +10,34 @@
 // +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
 // another).
 module tb_labelling_replay #(
-  parameter int unsigned MaxWidthPx    = 64,
-  parameter int unsigned MaxHeight     = 48,
-  parameter int unsigned MaxTilesX     = 4,
-  parameter int unsigned MaxTilesY     = 4,
-  parameter int unsigned LabelsPerTile = 64,
-  parameter int unsigned MaxObjects    = 64,
-  parameter int unsigned BeatsIn       = 3072,
-  parameter int unsigned WordsOut      = 12,
-  parameter int unsigned Frames        = 1
+  parameter int MaxWidthPx    = 64,
+  parameter int MaxHeight     = 48,
+  parameter int MaxTilesX     = 4,
+  parameter int MaxTilesY     = 4,
+  parameter int LabelsPerTile = 64,
+  parameter int MaxObjects    = 64,
+  parameter int BeatsIn       = 3072,
+  parameter int WordsOut      = 12,
+  parameter int Frames        = 1,
+  // The object word's width: the manifest's expected.hex width_bits less the last bit (897 at
+  // scw_pkg's widths).
+  parameter int OutW          = 897
 );
-  localparam int unsigned OutW  = scw_pkg::ObjWordBits;  // sim/words/labelling_pack.hpp: 897
-  localparam int unsigned Nodes = MaxTilesX * MaxTilesY * LabelsPerTile;
+  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
+  // k is the ready of cycles k mod 7.
+  localparam logic [6:0] ReadyPattern = 7'b1001011;
+  localparam int Nodes = MaxTilesX * MaxTilesY * LabelsPerTile;
   // Generous: the stage takes about one beat a clock, then sweeps its used nodes twice a frame;
   // the source idles 1 clock in 4 and the sink 3 in 7.
-  localparam longint unsigned MaxCycles = 8 * (BeatsIn + WordsOut) + 16 * Nodes * (Frames + 1)
+  localparam longint MaxCycles = 8 * (BeatsIn + WordsOut) + 16 * Nodes * (Frames + 1)
                                           + 10000;
 
   logic [17:0]   in_mem  [BeatsIn];   // {eol, sof, d[15:0]}
-  logic [OutW:0] exp_mem [WordsOut];  // {last, data[896:0]}
+  logic [OutW:0] exp_mem [WordsOut];  // {last, data[OutW-1:0]}
   string dir;
-  int unsigned width, height, tile_w, tile_h, floor_q4, min_area, stalls = 1;
+  int width, height, tile_w, tile_h, floor_q4, min_area, stalls = 1;
   initial begin
-    void'($value$plusargs("stalls=%d", stalls));
+    if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
     if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
         !$value$plusargs("tile_w=%d", tile_w) || !$value$plusargs("tile_h=%d", tile_h) ||
@@ -40,19 +45,21 @@ module tb_labelling_replay #(
       $fatal(1, "give the set's config: +width +height +tile_w +tile_h +floor +min_area");
     if (width * height * Frames != BeatsIn)
       $fatal(1, "%0d frames of %0d x %0d are not %0d beats", Frames, width, height, BeatsIn);
-    $readmemh({dir, "/in.hex"}, in_mem);
-    $readmemh({dir, "/expected.hex"}, exp_mem);
+    $readmemh({dir, "/in.hex"}, in_mem, 0, BeatsIn - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, WordsOut - 1);
   end
 
   logic clk = 1'b0, rst_n = 1'b0;
   always #4 clk = ~clk;  // 125 MHz
-  initial #20 rst_n = 1'b1;  // cfg_* are set at time 0, before reset ends, as the stage needs
+  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
+  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
+  initial #22 rst_n = 1'b1;  // cfg_* are set at time 0, before reset ends, as the stage needs
 
-  longint unsigned cyc = 0;
+  longint cyc = 0;
   always_ff @(posedge clk) cyc <= cyc + 1;
 
   // Source: offers on 3 of 4 cycles; a beat once offered is held until taken.
-  int unsigned i = 0;
+  int i = 0;
   logic in_valid, in_ready, in_held = 1'b0;
   logic [17:0] in_beat;
   assign in_valid = rst_n && (i < BeatsIn) && (((cyc % 4) != 3) || in_held || stalls == 0);
@@ -63,10 +70,10 @@ module tb_labelling_replay #(
   end
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each word taken must be the next expected one.
-  int unsigned o = 0, statuses = 0;
+  int o = 0, statuses = 0;
   logic out_valid, out_ready, out_last, err;
   logic [OutW-1:0] out_data;
-  assign out_ready = ((cyc % 7) inside {0, 1, 3, 6}) || stalls == 0;
+  assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
 
   scw_labelling #(
     .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .MaxTilesX(MaxTilesX),
@@ -84,14 +91,14 @@ module tb_labelling_replay #(
   // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
   logic stalled = 1'b0;
   logic [OutW:0] stalled_word;
-  always_ff @(posedge clk) begin
+  always @(posedge clk) begin
     if (stalled && (out_valid !== 1'b1 || {out_last, out_data} !== stalled_word))
       $fatal(1, "word %0d: out_valid or the word changed while stalled (cycle %0d)", o, cyc);
     stalled <= out_valid && !out_ready;
     stalled_word <= {out_last, out_data};
   end
 
-  always_ff @(posedge clk) begin
+  always @(posedge clk) begin
     if (cyc > MaxCycles)
       $fatal(1, "timeout after %0d of %0d words (%0d of %0d beats in)", o, WordsOut, i, BeatsIn);
     if (rst_n && err !== 1'b0) $fatal(1, "err_o on a well-formed stream (cycle %0d)", cyc);

@@ -9,28 +9,31 @@
 // max_height, rows, frac_bits, coord_bits, and the hex files' meta.beats (all three files of a
 // set have W * H / Ppc beats).
 module tb_rectify_replay #(
-  parameter int unsigned Ppc        = 2,
-  parameter int unsigned MaxWidthPx = 128,
-  parameter int unsigned MaxHeight  = 96,
-  parameter int unsigned Rows       = 32,
-  parameter int unsigned FracBits   = 5,
-  parameter int unsigned CoordBits  = 14,
-  parameter int unsigned Beats      = 1024
+  parameter int Ppc        = 2,
+  parameter int MaxWidthPx = 128,
+  parameter int MaxHeight  = 96,
+  parameter int Rows       = 32,
+  parameter int FracBits   = 5,
+  parameter int CoordBits  = 14,
+  parameter int Beats      = 1024
 );
-  localparam int unsigned MaxWH   = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight;
+  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
+  // k is the ready of cycles k mod 7.
+  localparam logic [6:0] ReadyPattern = 7'b1001011;
+  localparam int MaxWH   = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight;
   // What scw_rectify derives from its parameters; the manifest's coord_bits must agree.
-  localparam int unsigned DutCoordBits = $clog2(MaxWH * (1 << FracBits) + 1) + 1;
-  localparam int unsigned BeatW = Ppc * 8;
-  localparam int unsigned MapW  = Ppc * 2 * CoordBits;
-  localparam int unsigned WW    = $clog2(MaxWidthPx + 1);
-  localparam int unsigned HW    = $clog2(MaxHeight + 1);
-  localparam int unsigned SlotW = $clog2(Rows);
+  localparam int DutCoordBits = $clog2(MaxWH * (1 << FracBits) + 1) + 1;
+  localparam int BeatW = Ppc * 8;
+  localparam int MapW  = Ppc * 2 * CoordBits;
+  localparam int WW    = $clog2(MaxWidthPx + 1);
+  localparam int HW    = $clog2(MaxHeight + 1);
+  localparam int SlotW = $clog2(Rows);
 
   logic [BeatW+1:0] in_mem  [Beats];  // {eol, sof, px[Ppc-1..0]}
   logic [MapW+1:0]  map_mem [Beats];  // {eol, sof, {y, x}[Ppc-1..0]}
   logic [BeatW+1:0] exp_mem [Beats];
   string dir;
-  int unsigned width, height, lead;
+  int width, height, lead;
   initial begin
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
     if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
@@ -41,20 +44,22 @@ module tb_rectify_replay #(
              DutCoordBits);
     if (width * height / Ppc != Beats)
       $fatal(1, "%0d x %0d at %0d px per beat is not %0d beats", width, height, Ppc, Beats);
-    $readmemh({dir, "/input.hex"}, in_mem);
-    $readmemh({dir, "/map.hex"}, map_mem);
-    $readmemh({dir, "/expected.hex"}, exp_mem);
+    $readmemh({dir, "/input.hex"}, in_mem, 0, Beats - 1);
+    $readmemh({dir, "/map.hex"}, map_mem, 0, Beats - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
   end
 
   logic clk = 1'b0, rst_n = 1'b0;
   always #4 clk = ~clk;  // 125 MHz
-  initial #20 rst_n = 1'b1;
+  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
+  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
+  initial #22 rst_n = 1'b1;
 
-  int unsigned cyc = 0;
+  int cyc = 0;
   always_ff @(posedge clk) cyc <= cyc + 1;
 
   // Raw source: offers on 3 of 4 cycles; holds a beat until it is accepted.
-  int unsigned i = 0;
+  int i = 0;
   logic in_valid, in_ready, in_held = 1'b0;
   logic [BeatW+1:0] in_beat;
   assign in_valid = rst_n && (i < Beats) && (((cyc % 4) != 3) || in_held);
@@ -65,7 +70,7 @@ module tb_rectify_replay #(
   end
 
   // Map source: offers on 4 of 5 cycles, out of step with the raw source.
-  int unsigned j = 0;
+  int j = 0;
   logic map_valid, map_ready, map_held = 1'b0;
   logic [MapW+1:0] map_beat;
   assign map_valid = rst_n && (j < Beats) && (((cyc % 5) != 2) || map_held);
@@ -76,11 +81,11 @@ module tb_rectify_replay #(
   end
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each output must be the next expected line.
-  int unsigned o = 0;
+  int o = 0;
   logic out_valid, out_ready, out_sof, out_eol;
   logic [BeatW-1:0] out_data;
   logic [2:0] err;
-  assign out_ready = (cyc % 7) inside {0, 1, 3, 6};
+  assign out_ready = ReadyPattern[cyc % 7];
 
   scw_rectify #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Rows(Rows), .FracBits(FracBits)
@@ -97,7 +102,7 @@ module tb_rectify_replay #(
 
   initial #(Beats * 8 * 40 + 100000) $fatal(1, "timeout after %0d of %0d beats (raw %0d, map %0d in)",
                                             o, Beats, i, j);
-  always_ff @(posedge clk) begin
+  always @(posedge clk) begin
     if (err != '0) $fatal(1, "err_o = %b on a well-formed frame (cycle %0d)", err, cyc);
     if (out_valid && out_ready) begin
       if ({out_eol, out_sof, out_data} !== exp_mem[o])

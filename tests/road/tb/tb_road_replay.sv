@@ -63,7 +63,9 @@ module tb_road_replay #(
 
   logic clk = 1'b0, rst_n = 1'b0;
   always #4 clk = ~clk;  // 125 MHz
-  initial #20 rst_n = 1'b1;  // cfg_* are set at time 0, before reset ends, and stay
+  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
+  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
+  initial #22 rst_n = 1'b1;  // cfg_* are set at time 0, before reset ends, and stay
 
   int cyc = 0;
   always_ff @(posedge clk) cyc <= cyc + 1;

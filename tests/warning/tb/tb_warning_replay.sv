@@ -12,26 +12,31 @@
 // +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
 // another).
 module tb_warning_replay #(
-  parameter int unsigned MaxDisparityPx = 128,
-  parameter int unsigned WordsIn        = 1,
-  parameter int unsigned WordsOut       = 1
+  parameter int MaxDisparityPx = 128,
+  parameter int WordsIn        = 1,
+  parameter int WordsOut       = 1,
+  // The words' widths: the manifest's in.hex and expected.hex width_bits less the last bit (the
+  // labelling object word and the frame result at scw_pkg's widths).
+  parameter int InW            = 897,
+  parameter int OutW           = 199
 );
-  localparam int unsigned InW  = scw_pkg::ObjWordBits;         // sim/words/labelling_pack.hpp: 897
-  localparam int unsigned OutW = scw_pkg::ResultWordBits;  // sim/words/warning_pack.hpp
-  localparam int unsigned Latency = 64 + 47;  // hls::warning::kLatency (kRuleLatency + 47)
+  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
+  // k is the ready of cycles k mod 7.
+  localparam logic [6:0] ReadyPattern = 7'b1001011;
+  localparam int Latency = 64 + 47;  // hls::warning::kLatency (kRuleLatency + 47)
   // Generous: the stage takes a word a clock unless its result waits; the source idles 1 clock
   // in 4 and the sink 3 in 7.
-  localparam longint unsigned MaxCycles = 8 * (WordsIn + WordsOut) + 8 * Latency + 1000;
+  localparam longint MaxCycles = 8 * (WordsIn + WordsOut) + 8 * Latency + 1000;
 
   logic [InW:0]  in_mem  [WordsIn];   // {last, data[InW-1:0]}
-  logic [OutW:0] exp_mem [WordsOut];  // {last, data[198:0]}
+  logic [OutW:0] exp_mem [WordsOut];  // {last, data[OutW-1:0]}
   string dir;
-  int unsigned stalls = 1;
+  int stalls = 1;
   int baseline_q8, focal_q4, cu_q4, cv_q4, veh_x_mm, veh_y_mm, veh_z_mm, tunnel_half_w_mm,
       tunnel_h_mm, high_mm, medium_mm, near_mm, min_height_mm, d_limit_q4, rule, spread_q4;
   // The cfg_* ports are static: they take their values at time 0, long before the first word.
   initial begin
-    void'($value$plusargs("stalls=%d", stalls));
+    if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
     if (!$value$plusargs("baseline_q8=%d", baseline_q8) ||
         !$value$plusargs("focal_q4=%d", focal_q4) || !$value$plusargs("cu_q4=%d", cu_q4) ||
@@ -47,19 +52,21 @@ module tb_warning_replay #(
       $fatal(1, "give the set's config.cfg: +baseline_q8 +focal_q4 +cu_q4 +cv_q4 +veh_x_mm ",
              "+veh_y_mm +veh_z_mm +tunnel_half_w_mm +tunnel_h_mm +high_mm +medium_mm +near_mm ",
              "+min_height_mm +d_limit_q4 +rule +spread_q4");
-    $readmemh({dir, "/in.hex"}, in_mem);
-    $readmemh({dir, "/expected.hex"}, exp_mem);
+    $readmemh({dir, "/in.hex"}, in_mem, 0, WordsIn - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, WordsOut - 1);
   end
 
   logic clk = 1'b0, rst_n = 1'b0;
   always #4 clk = ~clk;  // 125 MHz
-  initial #20 rst_n = 1'b1;
+  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
+  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
+  initial #22 rst_n = 1'b1;
 
-  longint unsigned cyc = 0;
+  longint cyc = 0;
   always_ff @(posedge clk) cyc <= cyc + 1;
 
   // Source: offers on 3 of 4 cycles; a word once offered is held until taken.
-  int unsigned i = 0;
+  int i = 0;
   logic in_valid, in_ready, in_held = 1'b0;
   logic [InW:0] in_word;
   assign in_valid = rst_n && (i < WordsIn) && (((cyc % 4) != 3) || in_held || stalls == 0);
@@ -70,10 +77,10 @@ module tb_warning_replay #(
   end
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each word taken must be the next expected one.
-  int unsigned o = 0;
+  int o = 0;
   logic out_valid, out_ready, out_last;
   logic [OutW-1:0] out_data;
-  assign out_ready = ((cyc % 7) inside {0, 1, 3, 6}) || stalls == 0;
+  assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
 
   logic road_ready;  // never asked for a line here
   scw_warning #(.MaxDisparityPx(MaxDisparityPx)) u_dut (
@@ -98,14 +105,14 @@ module tb_warning_replay #(
   // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
   logic stalled = 1'b0;
   logic [OutW:0] stalled_word;
-  always_ff @(posedge clk) begin
+  always @(posedge clk) begin
     if (stalled && (out_valid !== 1'b1 || {out_last, out_data} !== stalled_word))
       $fatal(1, "result %0d: out_valid or the word changed while stalled (cycle %0d)", o, cyc);
     stalled <= out_valid && !out_ready;
     stalled_word <= {out_last, out_data};
   end
 
-  always_ff @(posedge clk) begin
+  always @(posedge clk) begin
     if (cyc > MaxCycles)
       $fatal(1, "timeout after %0d of %0d results (%0d of %0d words in)", o, WordsOut, i,
              WordsIn);

@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "host/vectors/pipeline_set.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "host/pipeline/setup.hpp"
+#include "host/pipeline/synthetic.hpp"
+#include "host/synth/top_params.hpp"
+#include "host/vectors/vector_set.hpp"
+#include "sim/builds/pipeline_small_rtl.hpp"
+#include "sim/pipeline/pipeline_chain.hpp"
+#include "sim/pipeline/pipeline_top.hpp"
+#include "sim/words/pack.hpp"
+
+namespace scw::vectors {
+namespace {
+
+using json = nlohmann::json;
+using sim::Bits;
+
+// scw_pipeline's cfg_* ports in port order: cfg.hex holds one 32-bit word for each, and
+// tests/pipeline/tb/tb_pipeline_replay.sv connects them in this order. The values come from
+// sim::drive_pipeline_cfg, the function that configures the Verilated top.
+// clang-format off
+#define SCW_PIPELINE_CFG_PORTS(X)                                                               \
+  X(cfg_width_i) X(cfg_height_i) X(cfg_lead_i) X(cfg_dmin_i) X(cfg_num_disp_i)                \
+  X(cfg_prefilter_i) X(cfg_cap_i) X(cfg_sad_limit_i) X(cfg_texture_i) X(cfg_uniqueness_i)     \
+  X(cfg_subpixel_i) X(cfg_opencv_invalid_i) X(cfg_edge_i) X(cfg_tile_w_i) X(cfg_tile_h_i)     \
+  X(cfg_floor_i) X(cfg_min_area_i) X(cfg_baseline_q8_i) X(cfg_focal_q4_i) X(cfg_cu_q4_i)      \
+  X(cfg_cv_q4_i) X(cfg_veh_x_mm_i) X(cfg_veh_y_mm_i) X(cfg_veh_z_mm_i)                         \
+  X(cfg_tunnel_half_w_mm_i) X(cfg_tunnel_h_mm_i) X(cfg_high_mm_i) X(cfg_medium_mm_i)           \
+  X(cfg_near_mm_i) X(cfg_min_height_mm_i) X(cfg_d_limit_q4_i) X(cfg_rule_i) X(cfg_spread_i)   \
+  X(cfg_road_enable_i) X(cfg_road_a0_i) X(cfg_road_b0_i) X(cfg_road_a_min_i)                   \
+  X(cfg_road_a_max_i) X(cfg_road_h_min_i) X(cfg_road_h_max_i) X(cfg_road_tol_i)                \
+  X(cfg_road_tol_rel_i) X(cfg_road_gate_i) X(cfg_road_gate_rel_i) X(cfg_road_min_count_i)
+// clang-format on
+
+/// One port's value as drive_pipeline_cfg assigns it (its bit pattern, at most 32 bits).
+struct CfgValue {
+  std::uint32_t value = 0;
+  bool driven = false;
+  template <typename T>
+  CfgValue& operator=(T v) {
+    value = static_cast<std::uint32_t>(v);
+    driven = true;
+    return *this;
+  }
+};
+
+/// Stands in for the Verilated top: a member per cfg_* port.
+struct CfgPorts {
+#define SCW_MEMBER(port) CfgValue port;
+  SCW_PIPELINE_CFG_PORTS(SCW_MEMBER)
+#undef SCW_MEMBER
+};
+
+template <typename Build>
+std::vector<std::pair<std::string, std::uint32_t>> cfg_words(const sim::PipelineSetup& s) {
+  CfgPorts p;
+  sim::drive_pipeline_cfg<CfgPorts, Build>(p, s);
+  std::vector<std::pair<std::string, std::uint32_t>> v;
+#define SCW_ENTRY(port)                                                                  \
+  if (!p.port.driven) throw std::logic_error("pipeline set: " #port " is never driven"); \
+  v.emplace_back(#port, p.port.value);
+  SCW_PIPELINE_CFG_PORTS(SCW_ENTRY)
+#undef SCW_ENTRY
+  return v;
+}
+
+/// Synthetic street frames: a car-sized box at the middle of the range to the left, and a
+/// pedestrian-sized box that comes nearer and moves right, frame by frame.
+void synthetic_frames(PipelineSetOptions& o, int dmax) {
+  const int w = o.width, h = o.height;
+  for (int f = 0; f < o.frames; ++f) {
+    const int d = std::min(dmax, dmax / 2 + 2 * f);
+    const int px = std::min(w / 2 + 3 * f, w - w / 6 - 1);
+    const std::vector<host::pipeline::SyntheticBox> boxes = {
+        {w / 8, h / 3, w / 8 + w / 4, h - h / 8, dmax / 2}, {px, h / 4, px + w / 6, h - h / 10, d}};
+    const auto pair =
+        host::pipeline::synthetic_pair(w, h, 2, boxes, o.seed + static_cast<std::uint32_t>(f));
+    o.left.push_back(pair.left);
+    o.right.push_back(pair.right);
+  }
+}
+
+/// The knot port's words as tb_pipeline_replay.sv writes them, one a clock, left camera first:
+/// {right, row << col bits | col, {y, x}}.
+template <typename G>
+std::vector<Bits> knot_words(const sim::PipelineSetup& s) {
+  constexpr int kb = G::kKnotBits, addr_bits = G::kKnotRowBits + G::kKnotColBits;
+  const std::uint64_t mask = (std::uint64_t{1} << kb) - 1;
+  std::vector<Bits> v;
+  for (const bool right : {false, true}) {
+    const auto& k = right ? s.right_knots : s.left_knots;
+    for (int j = 0; j < s.knot_rows; ++j)
+      for (int i = 0; i < s.knot_cols; ++i) {
+        const auto& p = k[static_cast<std::size_t>(j * s.knot_cols + i)];
+        Bits w(2 * kb + addr_bits + 1);
+        w.set(0, kb, static_cast<std::uint64_t>(static_cast<std::int64_t>(p.x)) & mask);
+        w.set(kb, kb, static_cast<std::uint64_t>(static_cast<std::int64_t>(p.y)) & mask);
+        w.set(2 * kb, addr_bits,
+              (static_cast<std::uint64_t>(j) << G::kKnotColBits) | static_cast<std::uint64_t>(i));
+        w.set(2 * kb + addr_bits, 1, right ? 1 : 0);
+        v.push_back(std::move(w));
+      }
+  }
+  return v;
+}
+
+template <typename T>
+void require_equal(const std::vector<T>& rtl, const std::vector<T>& cpp, const char* what) {
+  const auto a = sim::pack_all(rtl), b = sim::pack_all(cpp);
+  if (a.size() != b.size())
+    throw std::runtime_error(std::string("pipeline set: the Verilated top's ") + what + " has " +
+                             std::to_string(a.size()) + " words, the C++ chain's " +
+                             std::to_string(b.size()));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!(a[i] == b[i]))
+      throw std::runtime_error(std::string("pipeline set: the Verilated top's ") + what +
+                               " differs from the C++ chain's at word " + std::to_string(i));
+}
+
+template <int P>
+PipelineSetSummary write_small(const PipelineSetOptions& o, const std::filesystem::path& dir,
+                               const std::function<void(const std::string&)>& say) {
+  using Build = sim::small_build::Build<P>;
+  const int w = o.left.front().cols, h = o.left.front().rows;
+  auto stage = host::pipeline::small_build_options();
+  if (w * h <= 64 * 48) stage.road_min_count = 50;  // as `scw soak`: a small frame's road
+  const auto knots = host::pipeline::identity_knots(w, h, Build::kGridLog2);
+  const auto setup = host::pipeline::make_setup(w, h, Build::kGridLog2, stage, knots, knots, 2);
+  const auto left = host::pipeline::frames_beats<P>(o.left);
+  const auto right = host::pipeline::frames_beats<P>(o.right);
+  const auto frames = static_cast<std::size_t>(o.frames);
+  const std::int64_t bound = static_cast<std::int64_t>(frames + 2) * (64LL * w * h + 50000);
+
+  sim::PipelineChain<Build> chain(setup, sim::PipelineEngines::all(sim::Engine::cpp), left, right);
+  chain.rect_left().record(true);
+  chain.rect_right().record(true);
+  chain.disparity().record(true);
+  chain.road().record(true);
+  chain.run(frames, bound);
+  if (say)
+    say("C++ chain: " + std::to_string(frames) + " frames in " + std::to_string(chain.cycles()) +
+        " cycles");
+  PipelineSetSummary sum{o.frames,       w,    h, P, left.size(), chain.object_table().size(),
+                         chain.cycles(), false};
+  if (o.rtl) {
+    typename sim::small_build::Top<P> top(setup);
+    const auto r = top.run(left, right, frames, bound);
+    require_equal(r.results, chain.results(), "frame results");
+    require_equal(r.object_table, chain.object_table(), "object table");
+    sum.rtl = true;
+    if (say) say("Verilated scw_pipeline: results and object table equal the C++ chain's");
+  }
+
+  json params = json::object();
+  for (const auto& [name, value] : host::synth::top_params<Build>()) params[name] = value;
+  const auto cfg = cfg_words<Build>(setup);
+  json config = {{"config", o.config}, {"ppc", P},           {"width", w},
+                 {"height", h},        {"frames", o.frames}, {"cfg_words", cfg.size()},
+                 {"params", params}};
+  VectorWriter out(dir, "pipeline", config,
+                   "scw_pipeline (" + o.config + " build, P = " + std::to_string(P) +
+                       "): " + std::to_string(o.frames) + " frames of " + std::to_string(w) + "x" +
+                       std::to_string(h) + " back to back; every stream between the stages");
+  std::vector<Bits> cfg_bits;
+  json lines = json::array();
+  for (const auto& [port, value] : cfg) {
+    Bits b(32);
+    b.set(0, 32, value);
+    cfg_bits.push_back(b);
+    lines.push_back({{"name", port}, {"value", value}});
+  }
+  out.add_hex("cfg.hex", "input", cfg_bits, {{"lines", lines}});
+  using G = typename Build::map_grid;
+  out.add_hex(
+      "knots.hex", "input", knot_words<G>(setup),
+      {{"fields", json::array({{{"name", "x"}, {"lsb", 0}, {"bits", G::kKnotBits}},
+                               {{"name", "y"}, {"lsb", G::kKnotBits}, {"bits", G::kKnotBits}},
+                               {{"name", "address"},
+                                {"lsb", 2 * G::kKnotBits},
+                                {"bits", G::kKnotRowBits + G::kKnotColBits}},
+                               {{"name", "right"},
+                                {"lsb", 2 * G::kKnotBits + G::kKnotRowBits + G::kKnotColBits},
+                                {"bits", 1}}})}});
+  out.add_hex("left.hex", "input", sim::pack_all(left), pixel_beat_layout(P, 8));
+  out.add_hex("right.hex", "input", sim::pack_all(right), pixel_beat_layout(P, 8));
+  cv::Mat strip_l, strip_r;
+  cv::vconcat(o.left, strip_l);
+  cv::vconcat(o.right, strip_r);
+  out.add_image("left.png", "input", strip_l);
+  out.add_image("right.png", "input", strip_r);
+  out.add_hex("rect_left.hex", "expected", sim::pack_all(chain.rect_left().recorded()),
+              pixel_beat_layout(P, 8));
+  out.add_hex("rect_right.hex", "expected", sim::pack_all(chain.rect_right().recorded()),
+              pixel_beat_layout(P, 8));
+  out.add_hex("disparity.hex", "expected", sim::pack_all(chain.disparity().recorded()),
+              pixel_beat_layout(P, 16));
+  out.add_hex("road.hex", "expected", sim::pack_all(chain.road().recorded()),
+              pixel_beat_layout(P, 16));
+  const auto objects = sim::pack_all(chain.object_table());
+  out.add_hex("objects.hex", "expected", objects, stream_beat_layout(objects.front().width() - 1));
+  const auto results = sim::pack_all(chain.results());
+  out.add_hex("results.hex", "expected", results, stream_beat_layout(results.front().width() - 1));
+  out.finish();
+  return sum;
+}
+
+}  // namespace
+
+const std::vector<std::string>& pipeline_set_configs() {
+  static const std::vector<std::string> v = {"small"};
+  return v;
+}
+
+PipelineSetSummary write_pipeline_set(const PipelineSetOptions& opt,
+                                      const std::filesystem::path& dir,
+                                      const std::function<void(const std::string&)>& progress) {
+  PipelineSetOptions o = opt;
+  if (std::find(pipeline_set_configs().begin(), pipeline_set_configs().end(), o.config) ==
+      pipeline_set_configs().end())
+    throw std::invalid_argument("pipeline set: no build '" + o.config +
+                                "' with a Verilated top here; builds: small");
+  if (o.frames < 1) throw std::invalid_argument("pipeline set: --frames must be at least 1");
+  if (o.left.size() != o.right.size())
+    throw std::invalid_argument("pipeline set: " + std::to_string(o.left.size()) + " left and " +
+                                std::to_string(o.right.size()) + " right frames");
+  if (o.left.empty()) {
+    synthetic_frames(o, sim::small_build::Build<1>::kNumDisp - 1);
+  } else {
+    o.frames = static_cast<int>(o.left.size());
+    for (std::size_t i = 0; i < o.left.size(); ++i)
+      if (o.left[i].type() != CV_8UC1 || o.right[i].type() != CV_8UC1 ||
+          o.left[i].size() != o.left[0].size() || o.right[i].size() != o.left[0].size())
+        throw std::invalid_argument("pipeline set: frame " + std::to_string(i) +
+                                    ": every frame must be 8-bit grey and of one size");
+  }
+  if (o.ppc == 1) return write_small<1>(o, dir, progress);
+  if (o.ppc == 2) return write_small<2>(o, dir, progress);
+  throw std::invalid_argument("pipeline set: --ppc is 1 or 2 (the small build's Verilated tops)");
+}
+
+}  // namespace scw::vectors

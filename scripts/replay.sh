@@ -1,0 +1,199 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Replays one golden vector set against its RTL block with a self-checking testbench, the way a
+# user replays it in their own simulator (docs/vectors.md, "Replaying a set"):
+#   scripts/replay.sh SET WORKDIR [--simulator verilator|icarus] [+plusarg ...]
+# The set's manifest.json names its stage; the table below says, per stage, the testbench, the
+# RTL files, which manifest keys are the block's parameters, the testbench's and its plusargs.
+#   verilator  Verilator 5.006 --binary on the SystemVerilog sources (2-state: an X reads as 0).
+#   icarus     Yosys reads the same sources at the set's parameters and writes the block as plain
+#              Verilog (proc; flatten, but not for the whole top, whose testbench probes its
+#              stages; write_verilog), which Icarus Verilog 11 runs with the same
+#              testbench, 4-state: an X on a compared output fails the replay. It is the design
+#              as synthesis reads it.
+# Extra +plusargs go to the testbench (e.g. +stalls=0). Prints the testbench's PASS line, or its
+# first differing beat; exits non-zero on any failure.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+usage() {
+  echo "usage: replay.sh SET WORKDIR [--simulator verilator|icarus] [+plusarg ...]" >&2
+  exit 2
+}
+[ $# -ge 2 ] || usage
+set_dir="$1"
+work="$2"
+shift 2
+simulator=verilator
+extra=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --simulator) [ $# -ge 2 ] || usage; simulator="$2"; shift 2 ;;
+    +*) extra+=("$1"); shift ;;
+    *) echo "replay.sh: unknown argument '$1'" >&2; usage ;;
+  esac
+done
+case "$simulator" in
+  verilator | icarus) ;;
+  *) echo "replay.sh: --simulator is verilator or icarus, not '$simulator'" >&2; exit 2 ;;
+esac
+[ -f "$set_dir/manifest.json" ] ||
+  { echo "replay.sh: no manifest.json in '$set_dir': give a vector set folder" >&2; exit 2; }
+set_dir="$(cd "$set_dir" && pwd)"
+manifest="$set_dir/manifest.json"
+
+# A value of the manifest's config block by key: an integer (possibly negative) or a boolean
+# (true/false -> 1/0). The config comes before the file table, so the first match is the
+# config's even for keys the file entries repeat (width, height, beats).
+field() {
+  local v
+  v="$(grep -o "\"$1\": *[-a-z0-9]*" "$manifest" | head -1 | sed 's/.*: *//' |
+    sed 's/^true$/1/; s/^false$/0/')"
+  [[ "$v" =~ ^-?[0-9]+$ ]] || { echo "replay.sh: no number '$1' in $manifest" >&2; exit 2; }
+  echo "$v"
+}
+# A number of one file's entry in the file table: file_field expected.hex width_bits.
+file_field() {
+  local v
+  v="$(awk -v name="\"name\": \"$1\"" -v key="\"$2\":" '
+    index($0, name) { inside = 1 }
+    inside && index($0, key) { gsub(/[^0-9]/, "", $2); print $2; exit }' "$manifest")"
+  [[ "$v" =~ ^[0-9]+$ ]] || { echo "replay.sh: no '$2' for $1 in $manifest" >&2; exit 2; }
+  echo "$v"
+}
+
+# Per stage: tb (under tests/), top, rtl (under rtl_models/, after the package), the block's
+# parameters and the testbench's own (Name=manifest_key), and the plusargs (arg=manifest_key).
+stage="$(grep -o '"stage": *"[a-z_]*"' "$manifest" | head -1 | sed 's/.*: *"//; s/"$//')"
+tb_params=()
+tb_extra=()
+plusargs=()
+flatten=1
+case "$stage" in
+  line_buffer)
+    tb=common/tb/tb_line_buffer_replay.sv top=scw_line_buffer
+    rtl=(common/scw_ram_sdp.sv common/scw_line_buffer.sv)
+    dut_params=(Ppc=ppc MaxWidthPx=max_width_px Rows=rows)
+    tb_params=(Beats=beats) ;;
+  rectify)
+    tb=rectify/tb/tb_rectify_replay.sv top=scw_rectify
+    rtl=(common/scw_ram_sdp.sv rectify/scw_rectify.sv)
+    dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height Rows=rows
+                FracBits=frac_bits)
+    tb_params=(CoordBits=coord_bits Beats=beats)
+    plusargs=(width=width height=height lead=lead_rows) ;;
+  disparity)
+    tb=disparity/tb/tb_disparity_replay.sv top=scw_disparity
+    rtl=(common/scw_ram_sdp.sv "$(cd "$root/rtl_models" && echo disparity/*.sv)")
+    dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height Window=window
+                NumDisp=num_disp)
+    tb_params=(Beats=beats)
+    plusargs=(width=width height=height dmin=dmin num_disp=num_disp prefilter=prefilter
+              cap=prefilter_cap sad_limit=sad_limit texture=texture_threshold
+              uniqueness=uniqueness_ratio subpixel=subpixel opencv_invalid=opencv_invalid
+              edge=edge_candidates) ;;
+  labelling)
+    tb=labelling/tb/tb_labelling_replay.sv top=scw_labelling
+    rtl=(common/scw_ram_sdp.sv common/scw_fifo.sv "$(cd "$root/rtl_models" && echo labelling/*.sv)")
+    dut_params=(MaxWidthPx=max_width_px MaxHeight=max_height MaxTilesX=max_tiles_x
+                MaxTilesY=max_tiles_y LabelsPerTile=labels_per_tile MaxObjects=max_objects)
+    tb_params=(BeatsIn=beats_in WordsOut=words_out Frames=frames
+               "OutW=$(($(file_field expected.hex width_bits) - 1))")
+    plusargs=(width=width height=height tile_w=tile_w tile_h=tile_h floor=floor
+              min_area=min_area) ;;
+  road)
+    tb=road/tb/tb_road_replay.sv top=scw_road
+    rtl=("$(cd "$root/rtl_models" && echo common/*.sv road/*.sv)")
+    dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height)
+    tb_params=(Beats=beats Frames=frames FitClocks=fit_clocks)
+    plusargs=(width=width height=height enable=enable nominal_a=nominal_a nominal_b=nominal_b
+              a_min=a_min a_max=a_max h_min=h_min h_max=h_max tol_q4=tol_q4
+              tol_rel_q8=tol_rel_q8 gate_q4=gate_q4 gate_rel_q8=gate_rel_q8
+              min_count=min_count) ;;
+  warning)
+    tb=warning/tb/tb_warning_replay.sv top=scw_warning
+    rtl=("$(cd "$root/rtl_models" && echo warning/*.sv)")
+    dut_params=(MaxDisparityPx=max_disparity_px)
+    tb_params=(WordsIn=words_in WordsOut=words_out
+               "InW=$(($(file_field in.hex width_bits) - 1))"
+               "OutW=$(($(file_field expected.hex width_bits) - 1))")
+    for k in baseline_q8 focal_q4 cu_q4 cv_q4 veh_x_mm veh_y_mm veh_z_mm tunnel_half_w_mm \
+      tunnel_h_mm high_mm medium_mm near_mm min_height_mm d_limit_q4 rule spread_q4; do
+      plusargs+=("$k=$k")
+    done ;;
+  pipeline)
+    # The whole top; its testbench probes the stages' output ports by hierarchical name, so
+    # Yosys keeps the hierarchy.
+    tb=pipeline/tb/tb_pipeline_replay.sv top=scw_pipeline flatten=0
+    tb_extra=(pipeline/tb/tb_pipeline_stream_check.sv)
+    rtl=("$(cd "$root/rtl_models" && echo common/*.sv rectify/*.sv disparity/*.sv road/*.sv \
+      labelling/*.sv warning/*.sv pipeline/*.sv)")
+    dut_params=(Ppc=Ppc MaxWidthPx=MaxWidthPx MaxHeight=MaxHeight RectRows=RectRows
+                GridLog2=GridLog2 Window=Window NumDisp=NumDisp MaxTilesX=MaxTilesX
+                MaxTilesY=MaxTilesY LabelsPerTile=LabelsPerTile MaxObjects=MaxObjects
+                MaxDisparityPx=MaxDisparityPx)
+    tb_params=(Width=width Height=height CfgWords=cfg_words
+               "KnotBits=$(file_field knots.hex width_bits)" "Knots=$(file_field knots.hex beats)"
+               "RawBeats=$(file_field left.hex beats)" "DispBeats=$(file_field disparity.hex beats)"
+               "ObjBits=$(file_field objects.hex width_bits)"
+               "ObjWords=$(file_field objects.hex beats)"
+               "ResBits=$(file_field results.hex width_bits)"
+               "Results=$(file_field results.hex beats)") ;;
+  *)
+    echo "replay.sh: $manifest has stage '${stage}'; replayable stages: line_buffer rectify" \
+      "disparity labelling road warning pipeline" >&2
+    exit 2 ;;
+esac
+tb_module="$(basename "$tb" .sv)"
+tb_files=("$root/tests/$tb")
+for f in "${tb_extra[@]}"; do tb_files+=("$root/tests/$f"); done
+read -r -a rtl <<< "${rtl[*]}"  # the globs above expand to one word each
+sources=("$root/rtl_models/common/scw_pkg.sv")
+for f in "${rtl[@]}"; do
+  [ "$f" = common/scw_pkg.sv ] || sources+=("$root/rtl_models/$f")
+done
+
+# Name=value for the block's parameters and the testbench's (which repeats the block's).
+dut_values=()
+for kv in "${dut_params[@]}"; do dut_values+=("${kv%%=*}=$(field "${kv#*=}")"); done
+tb_values=("${dut_values[@]}")
+for kv in "${tb_params[@]}"; do
+  v="${kv#*=}"
+  [[ "$v" =~ ^[0-9]+$ ]] || v="$(field "$v")"
+  tb_values+=("${kv%%=*}=$v")
+done
+args=(+vectors="$set_dir")
+for kv in "${plusargs[@]}"; do args+=("+${kv%%=*}=$(field "${kv#*=}")"); done
+args+=("${extra[@]}")
+
+mkdir -p "$work"
+if [ "$simulator" = verilator ]; then
+  gargs=()
+  for kv in "${tb_values[@]}"; do gargs+=("-G$kv"); done
+  verilator --binary --timing -Wno-fatal -Wno-lint -Wno-style --top-module "$tb_module" \
+    "${gargs[@]}" "${sources[@]}" "${tb_files[@]}" -Mdir "$work/obj" >"$work/build.log" 2>&1 ||
+    { cat "$work/build.log"; exit 1; }
+  "$work/obj/V$tb_module" "${args[@]}" | tee "$work/run.log"
+else
+  command -v iverilog >/dev/null ||
+    { echo "replay.sh: iverilog is missing: apt-get install iverilog (scripts/deps.sh)" >&2; exit 1; }
+  chparam=""
+  for kv in "${dut_values[@]}"; do chparam+=" -set ${kv%%=*} ${kv#*=}"; done
+  {
+    echo "read_verilog -sv ${sources[*]}"
+    echo "chparam$chparam $top"
+    echo "hierarchy -check -top $top"
+    if [ "$flatten" = 1 ]; then echo "proc; flatten; opt_clean"; else echo "proc; opt_clean"; fi
+    echo "write_verilog -noattr $work/dut.v"
+  } >"$work/dut.ys"
+  yosys -q -l "$work/yosys.log" -s "$work/dut.ys" >/dev/null 2>&1 ||
+    { tail -20 "$work/yosys.log"; exit 1; }
+  pargs=()
+  for kv in "${tb_values[@]}"; do pargs+=(-P "$tb_module.$kv"); done
+  # The block as Yosys wrote it has no parameters left: Icarus notes the testbench's overrides
+  # as "parameter not found" (in build.log), which is expected.
+  iverilog -g2012 -s "$tb_module" "${pargs[@]}" -o "$work/sim.vvp" "$work/dut.v" \
+    "${tb_files[@]}" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+  vvp -n "$work/sim.vvp" "${args[@]}" | tee "$work/run.log"
+fi
+# A testbench that ends without its verdict (a $finish elsewhere) must not pass.
+grep -q '^PASS: ' "$work/run.log" || { echo "replay.sh: no PASS line from the testbench" >&2; exit 1; }

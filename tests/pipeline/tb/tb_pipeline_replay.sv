@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: Apache-2.0
+// Self-checking replay of a pipeline golden vector set against the scw_pipeline top: the knots
+// loaded, raw left and right frames driven with their own idle cycles, both outputs stalled, and
+// every stream between the stages checked where it leaves its stage (rectified left and right,
+// disparity, what the road stage leaves, the object words) besides the top's two outputs (the
+// object table and the frame results). The first difference stops the run naming its stream,
+// frame, row and column (tb_pipeline_stream_check.sv). Plain SystemVerilog for Verilator 5.006
+// and Icarus 11 (docs/vectors.md, "Replaying a set").
+`timescale 1ns / 1ps
+`default_nettype none
+
+// Run: +vectors=<set folder> [+stalls=0]. Parameters: the manifest's config.params (the top's,
+// by their RTL names), width, height, and each hex file's beats and width_bits.
+module tb_pipeline_replay #(
+  parameter int Ppc            = 1,
+  parameter int MaxWidthPx     = 64,
+  parameter int MaxHeight      = 48,
+  parameter int RectRows       = 16,
+  parameter int GridLog2       = 3,
+  parameter int Window         = 5,
+  parameter int NumDisp        = 16,
+  parameter int MaxTilesX      = 2,
+  parameter int MaxTilesY      = 2,
+  parameter int LabelsPerTile  = 64,
+  parameter int MaxObjects     = 32,
+  parameter int MaxDisparityPx = 32,
+  parameter int Width          = 64,  // the frames'
+  parameter int Height         = 32,
+  parameter int CfgWords       = 45,  // cfg.hex: one 32-bit word per cfg_* port, in port order
+  parameter int KnotBits       = 29,  // knots.hex: {right, address, knot}
+  parameter int Knots          = 1,
+  parameter int RawBeats       = 1,   // left.hex, right.hex: {eol, sof, px}
+  parameter int DispBeats      = 1,   // rect_*.hex (the same count), disparity.hex, road.hex
+  parameter int ObjBits        = 898, // objects.hex: {last, word}
+  parameter int ObjWords       = 1,
+  parameter int ResBits        = 202, // results.hex: {last, result}
+  parameter int Results        = 1
+);
+  localparam int MaxWH  = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight;
+  localparam int KCols  = ((MaxWidthPx - 1) >> GridLog2) + 2;
+  localparam int KRows  = ((MaxHeight - 1) >> GridLog2) + 2;
+  localparam int KAddrW = $clog2(KRows) + $clog2(KCols);
+  localparam int KnotW  = KnotBits - 1 - KAddrW;
+  localparam int BeatW  = Ppc * 8;
+  localparam int DispW  = Ppc * 16;
+  localparam int WW     = $clog2(MaxWidthPx + 1);
+  localparam int HW     = $clog2(MaxHeight + 1);
+  localparam int NumW   = $clog2(NumDisp + 1);
+  localparam int SlotW  = $clog2(RectRows);
+  localparam int ObjW   = ObjBits - 1;
+  localparam int OutW   = ResBits - 1;
+  // Ready 1,1,0,1,0,0,1 (bit k: cycles k mod 7); the object table on another phase of it.
+  localparam logic [6:0] ReadyPattern = 7'b1001011;
+  // Generous: a frame takes a few thousand clocks at the small size, a few times more stalled.
+  localparam int MaxCycles = 64 * (RawBeats + ObjWords + Results) + 8 * Knots + 200000;
+
+  logic [31:0]         cfg     [CfgWords];
+  logic [KnotBits-1:0] knot    [Knots];
+  logic [BeatW+1:0]    l_mem   [RawBeats];
+  logic [BeatW+1:0]    r_mem   [RawBeats];
+  string dir;
+  int stalls = 1;
+  initial begin
+    if ($value$plusargs("stalls=%d", stalls)) begin end
+    if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    $readmemh({dir, "/cfg.hex"}, cfg, 0, CfgWords - 1);
+    $readmemh({dir, "/knots.hex"}, knot, 0, Knots - 1);
+    $readmemh({dir, "/left.hex"}, l_mem, 0, RawBeats - 1);
+    $readmemh({dir, "/right.hex"}, r_mem, 0, RawBeats - 1);
+  end
+
+  logic clk = 1'b0, rst_n = 1'b0;
+  always #4 clk = ~clk;  // 125 MHz
+  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
+  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart). cfg_* hold their
+  // values from time 0.
+  initial #22 rst_n = 1'b1;
+  int cyc = 0;
+  always @(posedge clk) cyc <= cyc + 1;
+
+  // Knots first, one a clock, run_i low; then run_i high for good.
+  int k = 0;
+  logic run, knot_we;
+  assign knot_we = rst_n && (k < Knots);
+  assign run     = rst_n && (k >= Knots);
+  always @(posedge clk) if (knot_we) k <= k + 1;
+  logic [KnotBits-1:0] knot_w;
+  assign knot_w = knot[(k < Knots) ? k : 0];
+
+  // Sources: left offers on 3 of 4 cycles, right on 4 of 5; a beat is held until taken.
+  int i = 0, j = 0;
+  logic l_valid, l_ready, l_held = 1'b0, r_valid, r_ready, r_held = 1'b0;
+  logic [BeatW+1:0] l_beat, r_beat;
+  assign l_valid = run && (i < RawBeats) && (((cyc % 4) != 3) || l_held || stalls == 0);
+  assign r_valid = run && (j < RawBeats) && (((cyc % 5) != 2) || r_held || stalls == 0);
+  assign l_beat  = l_mem[(i < RawBeats) ? i : 0];
+  assign r_beat  = r_mem[(j < RawBeats) ? j : 0];
+  always @(posedge clk) begin
+    l_held <= l_valid && !l_ready;
+    r_held <= r_valid && !r_ready;
+    if (l_valid && l_ready) i <= i + 1;
+    if (r_valid && r_ready) j <= j + 1;
+  end
+
+  logic out_valid, out_ready, out_last, obj_valid, obj_ready, obj_last;
+  logic [OutW-1:0] out_data;
+  logic [ObjW-1:0] obj_data;
+  logic [7:0] err;
+  assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
+  assign obj_ready = ReadyPattern[(cyc + 3) % 7] || stalls == 0;
+
+  scw_pipeline #(
+    .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .RectRows(RectRows),
+    .GridLog2(GridLog2), .Window(Window), .NumDisp(NumDisp), .MaxTilesX(MaxTilesX),
+    .MaxTilesY(MaxTilesY), .LabelsPerTile(LabelsPerTile), .MaxObjects(MaxObjects),
+    .MaxDisparityPx(MaxDisparityPx)
+  ) u_dut (
+    .clk_i(clk), .rst_ni(rst_n),
+    // cfg.hex, in the order of the manifest's cfg.hex layout (the ports' order)
+    .cfg_width_i(cfg[0][WW-1:0]), .cfg_height_i(cfg[1][HW-1:0]), .cfg_lead_i(cfg[2][SlotW-1:0]),
+    .cfg_dmin_i(cfg[3][WW-1:0]), .cfg_num_disp_i(cfg[4][NumW-1:0]),
+    .cfg_prefilter_i(cfg[5][0]), .cfg_cap_i(cfg[6][5:0]), .cfg_sad_limit_i(cfg[7]),
+    .cfg_texture_i(cfg[8]), .cfg_uniqueness_i(cfg[9][7:0]), .cfg_subpixel_i(cfg[10][0]),
+    .cfg_opencv_invalid_i(cfg[11][0]), .cfg_edge_i(cfg[12][NumW-1:0]),
+    .cfg_tile_w_i(cfg[13][15:0]), .cfg_tile_h_i(cfg[14][15:0]), .cfg_floor_i(cfg[15][15:0]),
+    .cfg_min_area_i(cfg[16]),
+    .cfg_baseline_q8_i(cfg[17][19:0]), .cfg_focal_q4_i(cfg[18][15:0]),
+    .cfg_cu_q4_i(cfg[19][15:0]), .cfg_cv_q4_i(cfg[20][15:0]),
+    .cfg_veh_x_mm_i(cfg[21][15:0]), .cfg_veh_y_mm_i(cfg[22][15:0]),
+    .cfg_veh_z_mm_i(cfg[23][15:0]), .cfg_tunnel_half_w_mm_i(cfg[24][15:0]),
+    .cfg_tunnel_h_mm_i(cfg[25][15:0]), .cfg_high_mm_i(cfg[26][15:0]),
+    .cfg_medium_mm_i(cfg[27][15:0]), .cfg_near_mm_i(cfg[28][15:0]),
+    .cfg_min_height_mm_i(cfg[29][15:0]), .cfg_d_limit_q4_i(cfg[30][15:0]),
+    .cfg_rule_i(cfg[31][0]), .cfg_spread_i(cfg[32][7:0]),
+    .cfg_road_enable_i(cfg[33][0]), .cfg_road_a0_i(cfg[34][17:0]), .cfg_road_b0_i(cfg[35]),
+    .cfg_road_a_min_i(cfg[36][17:0]), .cfg_road_a_max_i(cfg[37][17:0]),
+    .cfg_road_h_min_i(cfg[38][9:0]), .cfg_road_h_max_i(cfg[39][9:0]),
+    .cfg_road_tol_i(cfg[40][14:0]), .cfg_road_tol_rel_i(cfg[41][7:0]),
+    .cfg_road_gate_i(cfg[42][14:0]), .cfg_road_gate_rel_i(cfg[43][7:0]),
+    .cfg_road_min_count_i(cfg[44][19:0]),
+    .run_i(run), .knot_we_i(knot_we), .knot_right_i(knot_w[KnotBits-1]),
+    .knot_addr_i(knot_w[KnotW +: KAddrW]), .knot_data_i(knot_w[KnotW-1:0]),
+    .l_valid_i(l_valid), .l_ready_o(l_ready), .l_data_i(l_beat[BeatW-1:0]),
+    .l_sof_i(l_beat[BeatW]), .l_eol_i(l_beat[BeatW+1]),
+    .r_valid_i(r_valid), .r_ready_o(r_ready), .r_data_i(r_beat[BeatW-1:0]),
+    .r_sof_i(r_beat[BeatW]), .r_eol_i(r_beat[BeatW+1]),
+    .obj_valid_o(obj_valid), .obj_ready_i(obj_ready), .obj_data_o(obj_data),
+    .obj_last_o(obj_last),
+    .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
+    .out_last_o(out_last), .err_o(err)
+  );
+
+  // Each stream where it leaves its stage: the stage's output ports, by hierarchical name.
+  logic [31:0] n_rl, n_rr, n_disp, n_road, n_obj, n_table, n_res;
+  tb_pipeline_stream_check #(.Name("rect_left"), .Bits(BeatW + 2), .Lines(DispBeats), .Pixel(1),
+    .Ppc(Ppc), .Width(Width), .Height(Height)) u_rect_left (.clk(clk),
+    .take(u_dut.u_cam_l.u_rectify.out_valid_o && u_dut.u_cam_l.u_rectify.out_ready_i),
+    .line({u_dut.u_cam_l.u_rectify.out_eol_o, u_dut.u_cam_l.u_rectify.out_sof_o,
+           u_dut.u_cam_l.u_rectify.out_data_o}), .seen(n_rl));
+  tb_pipeline_stream_check #(.Name("rect_right"), .Bits(BeatW + 2), .Lines(DispBeats),
+    .Pixel(1), .Ppc(Ppc), .Width(Width), .Height(Height)) u_rect_right (.clk(clk),
+    .take(u_dut.u_cam_r.u_rectify.out_valid_o && u_dut.u_cam_r.u_rectify.out_ready_i),
+    .line({u_dut.u_cam_r.u_rectify.out_eol_o, u_dut.u_cam_r.u_rectify.out_sof_o,
+           u_dut.u_cam_r.u_rectify.out_data_o}), .seen(n_rr));
+  tb_pipeline_stream_check #(.Name("disparity"), .Bits(DispW + 2), .Lines(DispBeats),
+    .Pixel(1), .Ppc(Ppc), .Width(Width), .Height(Height)) u_disparity (.clk(clk),
+    .take(u_dut.u_disparity.out_valid_o && u_dut.u_disparity.out_ready_i),
+    .line({u_dut.u_disparity.out_eol_o, u_dut.u_disparity.out_sof_o,
+           u_dut.u_disparity.out_data_o}), .seen(n_disp));
+  tb_pipeline_stream_check #(.Name("road"), .Bits(DispW + 2), .Lines(DispBeats), .Pixel(1),
+    .Ppc(Ppc), .Width(Width), .Height(Height)) u_road (.clk(clk),
+    .take(u_dut.u_road.out_valid_o && u_dut.u_road.out_ready_i),
+    .line({u_dut.u_road.out_eol_o, u_dut.u_road.out_sof_o, u_dut.u_road.out_data_o}),
+    .seen(n_road));
+  tb_pipeline_stream_check #(.Name("objects"), .Bits(ObjBits), .Lines(ObjWords), .Pixel(0))
+    u_objects (.clk(clk),
+    .take(u_dut.u_labelling.out_valid_o && u_dut.u_labelling.out_ready_i),
+    .line({u_dut.u_labelling.out_last_o, u_dut.u_labelling.out_data_o}), .seen(n_obj));
+  tb_pipeline_stream_check #(.Name("objects"), .Bits(ObjBits), .Lines(ObjWords), .Pixel(0))
+    u_table (.clk(clk), .take(obj_valid && obj_ready), .line({obj_last, obj_data}),
+    .seen(n_table));
+  tb_pipeline_stream_check #(.Name("results"), .Bits(ResBits), .Lines(Results), .Pixel(0))
+    u_results (.clk(clk), .take(out_valid && out_ready), .line({out_last, out_data}),
+    .seen(n_res));
+
+  always @(posedge clk) begin
+    if (cyc > MaxCycles)
+      $fatal(1, "timeout at cycle %0d: %0d of %0d results, %0d of %0d object words, %0d of %0d disparity beats (%0d, %0d raw beats in)",
+             cyc, n_res, Results, n_obj, ObjWords, n_disp, DispBeats, i, j);
+    if (rst_n && err !== 8'd0) $fatal(1, "err_o = %b on well-formed frames (cycle %0d)", err, cyc);
+    if (n_res == Results && n_table == ObjWords) begin
+      if (n_rl != DispBeats || n_rr != DispBeats || n_disp != DispBeats || n_road != DispBeats ||
+          n_obj != ObjWords)
+        $fatal(1, "results out, but streams short: rect %0d/%0d, disparity %0d, road %0d of %0d, objects %0d of %0d",
+               n_rl, n_rr, n_disp, n_road, DispBeats, n_obj, ObjWords);
+      $display("PASS: %0d beats match %s (%0d results, %0d object words, %0d disparity beats a stream, %0d cycles)",
+               Results, dir, Results, ObjWords, DispBeats, cyc);
+      $finish;
+    end
+  end
+endmodule
