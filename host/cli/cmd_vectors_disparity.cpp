@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "host/cli/commands.hpp"
 #include "host/vectors/disparity_set.hpp"
@@ -14,21 +15,52 @@ namespace vec = scw::vectors;
 
 void add_vectors_disparity_command(CLI::App& vectors) {
   struct Options {
-    std::string preset, out;
+    std::string preset, out, mode = "opencv";
     std::string data_dir = "data/tsukuba";
+    vec::UserPair pair;
+    std::vector<int> roi;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = vectors.add_subcommand(
       "disparity", "Write a disparity golden vector set (left + right in, disparities out)");
-  cmd->add_option("--preset", o->preset,
-                  "texture (64x24 random texture with known shifts, N = 5, d 0..15, thesis "
-                  "mode) or tsukuba (96x48 crop of the bundled pair, N = 9, d 0..15, opencv mode)")
-      ->required()
-      ->check(CLI::IsMember(vec::disparity_presets()));
+  auto* preset = cmd->add_option(
+      "--preset", o->preset,
+      "texture (64x24 random texture with known shifts, N = 5, d 0..15, thesis mode), tsukuba "
+      "(96x48 crop of the bundled pair, N = 9, d 0..15, opencv mode) or tsukuba_edge (the same "
+      "with the left edge band)");
+  preset->check(CLI::IsMember(vec::disparity_presets()));
+  auto* left =
+      cmd->add_option("--left", o->pair.left, "Your rectified left image (instead of a preset)")
+          ->check(CLI::ExistingFile);
+  auto* right = cmd->add_option("--right", o->pair.right, "Your rectified right image")
+                    ->check(CLI::ExistingFile);
+  left->needs(right)->excludes(preset);
+  right->needs(left);
+  cmd->add_option("--roi", o->roi,
+                  "With --left/--right: X Y W H of the crop to match (the vector build takes up "
+                  "to 128 x 64)")
+      ->expected(4);
+  cmd->add_option("--window", o->pair.window, "With --left/--right: N")
+      ->check(CLI::IsMember({5, 9}));
+  cmd->add_option("--mode", o->mode, "With --left/--right: thesis or opencv")
+      ->check(CLI::IsMember({"thesis", "opencv"}));
+  cmd->add_option("--dmin", o->pair.dmin, "With --left/--right: the first of the 16 candidates");
+  cmd->add_option("--edge-candidates", o->pair.edge_candidates,
+                  "With --left/--right: decide the left edge band from K candidates (0: blind)");
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir, "Folder with the Tsukuba PPMs");
   cmd->callback([o] {
-    const auto s = vec::write_disparity_set(vec::disparity_preset(o->preset, o->data_dir), o->out);
+    if (o->preset.empty() && o->pair.left.empty())
+      throw CLI::ValidationError("give --preset NAME, or your pair with --left L --right R");
+    vec::DisparityFrame f;
+    if (!o->preset.empty()) {
+      f = vec::disparity_preset(o->preset, o->data_dir);
+    } else {
+      o->pair.mode = disparity::mode_from_name(o->mode);
+      if (!o->roi.empty()) o->pair.roi = cv::Rect(o->roi[0], o->roi[1], o->roi[2], o->roi[3]);
+      f = vec::disparity_frame(o->pair);
+    }
+    const auto s = vec::write_disparity_set(f, o->out);
     std::cout << "C++ model: " << s.beats << " beats equal the direct reference (" << s.cycles
               << " cycles)\n";
     if (s.known_shifts)

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "host/cli/commands.hpp"
 #include "host/vectors/labelling_set.hpp"
@@ -16,20 +17,45 @@ void add_vectors_labelling_command(CLI::App& vectors) {
   struct Options {
     std::string preset, out;
     std::string data_dir = "data/tsukuba";
+    vec::UserMap map;
+    std::vector<int> roi, tiles;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = vectors.add_subcommand(
       "labelling", "Write a labelling golden vector set (disparities in, object words out)");
-  cmd->add_option("--preset", o->preset,
-                  "shapes (five 64x48 adversarial shapes, 3x4 tiles), tsukuba (64x48 crop of "
-                  "the bundled ground truth, 2x2 tiles, min area 4) or overflow (a tile and an "
-                  "object overflow, then a normal frame)")
-      ->required()
-      ->check(CLI::IsMember(vec::labelling_presets()));
+  auto* preset = cmd->add_option(
+      "--preset", o->preset,
+      "shapes (five 64x48 adversarial shapes, 3x4 tiles), tsukuba (64x48 crop of the bundled "
+      "ground truth, 2x2 tiles, min area 4) or overflow (a tile and an object overflow, then a "
+      "normal frame)");
+  preset->check(CLI::IsMember(vec::labelling_presets()));
+  cmd->add_option("--disparity", o->map.disparity,
+                  "Your disparity map instead of a preset: the 16-bit Q11.4 PNG `scw disparity "
+                  "--out16` writes")
+      ->check(CLI::ExistingFile)
+      ->excludes(preset);
+  cmd->add_option("--roi", o->roi, "With --disparity: X Y W H of the crop (up to 64 x 48)")
+      ->expected(4);
+  cmd->add_option("--tiles", o->tiles, "With --disparity: tiles across and down")->expected(2);
+  cmd->add_option("--floor", o->map.floor, "With --disparity: the lowest valid value (Q11.4)");
+  cmd->add_option("--min-area", o->map.min_area, "With --disparity: the smallest object");
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir, "Folder with truedisp.row3.col3.pgm");
   cmd->callback([o] {
-    const auto s = vec::write_labelling_set(vec::labelling_preset(o->preset, o->data_dir), o->out);
+    if (o->preset.empty() && o->map.disparity.empty())
+      throw CLI::ValidationError("give --preset NAME, or your map with --disparity FILE");
+    vec::LabellingPreset p;
+    if (!o->preset.empty()) {
+      p = vec::labelling_preset(o->preset, o->data_dir);
+    } else {
+      if (!o->roi.empty()) o->map.roi = cv::Rect(o->roi[0], o->roi[1], o->roi[2], o->roi[3]);
+      if (!o->tiles.empty()) {
+        o->map.tiles_x = o->tiles[0];
+        o->map.tiles_y = o->tiles[1];
+      }
+      p = vec::labelling_frame(o->map);
+    }
+    const auto s = vec::write_labelling_set(p, o->out);
     std::cout << "C++ model: " << s.frames << " frames, " << s.words
               << " words, checked against the flood-fill reference (" << s.cycles << " cycles)\n";
     std::cout << "wrote " << o->out << "/ (" << s.frames << " frames of " << s.width << "x"

@@ -39,8 +39,8 @@ void print(const vec::RectifySetSummary& s, const std::string& out) {
     std::cout << "RTL: " << s.rtl_beats << " beats equal the integer reference and the C++ "
               << "model, cycle for cycle\n";
   std::cout << "wrote " << out << "/ (" << s.width << "x" << s.height << ", P = " << s.ppc
-            << ", lead " << s.lead_rows << " rows, " << s.rows_needed << " of "
-            << vec::kRectifyVecRows << " raw rows in flight)\n";
+            << ", lead " << s.lead_rows << " rows, " << s.rows_needed << " of " << s.rows
+            << " raw rows in flight)\n";
 }
 
 }  // namespace
@@ -49,8 +49,9 @@ void add_vectors_rectify_command(CLI::App& vectors) {
   struct Options {
     std::string preset, out;
     int ppc = vec::kRectifyVecRtlPpc;
-    std::string engine = "rtl", stalls = "both", data_dir = "data/chessboard";
+    std::string engine = "rtl", stalls = "both", data_dir = "data/chessboard", build = "vectors";
     std::vector<int> roi{352, 112};  // chessboard: top-left of the rectified ROI (on the board)
+    std::vector<int> size;           // chessboard: the ROI's size (default: 128 x 96, thesis: all)
   };
   auto o = std::make_shared<Options>();
   auto* cmd = vectors.add_subcommand(
@@ -68,18 +69,32 @@ void add_vectors_rectify_command(CLI::App& vectors) {
   cmd->add_option("--stalls", o->stalls,
                   "Stalls while generating (the vectors do not depend on them): none, idle, "
                   "backpressure, both or random:<seed>");
+  cmd->add_option("--config", o->build,
+                  "vectors: frames up to 128 x 96 (the committed sets; --engine rtl checks the "
+                  "Verilated stage); thesis: the thesis build (1280 x 480, 64 raw rows; the "
+                  "chessboard presets rectify the whole 640 x 480 image; --engine cpp)")
+      ->check(CLI::IsMember(vec::rectify_builds()));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir,
                   "Folder with left01.jpg, right01.jpg and derived_stereo_calibration_helper.yml");
-  cmd->add_option("--roi", o->roi, "Chessboard: top-left X Y of the 128x96 rectified ROI")
+  cmd->add_option("--roi", o->roi, "Chessboard: top-left X Y of the rectified ROI")->expected(2);
+  cmd->add_option("--size", o->size,
+                  "Chessboard: W H of the rectified ROI (default 128 96; --config thesis: the "
+                  "whole image from 0 0)")
       ->expected(2);
   cmd->callback([o] {
     const auto stalls = sim::StallPattern::parse(o->stalls);  // a bad pattern before any work
     const bool rtl = o->engine == "rtl";
-    if (rtl) vec::check_rectify_rtl_ppc(o->ppc);
-    const auto f = vec::rectify_preset(o->preset, o->data_dir, {o->roi[0], o->roi[1]});
+    if (rtl) vec::check_rectify_rtl_ppc(o->ppc, o->build);
+    // The thesis build takes the whole image (from 0 0) unless --size says otherwise.
+    const bool whole = o->build == "thesis" && o->size.empty();
+    const cv::Size size = !o->size.empty() ? cv::Size(o->size[0], o->size[1])
+                          : whole          ? cv::Size()
+                                           : cv::Size(128, 96);
+    const auto f = vec::rectify_preset(o->preset, o->data_dir,
+                                       whole ? cv::Point() : cv::Point(o->roi[0], o->roi[1]), size);
     const vec::RectifyRtl engine = rtl ? vec::RectifyRtl(run_rtl) : vec::RectifyRtl();
-    print(vec::write_rectify_set(f, o->preset, o->ppc, stalls, engine, o->out), o->out);
+    print(vec::write_rectify_set(f, o->preset, o->ppc, stalls, engine, o->out, o->build), o->out);
   });
 }
 

@@ -200,6 +200,46 @@ DisparityFrame disparity_preset(const std::string& name, const std::filesystem::
                               "' (there are: texture, tsukuba, tsukuba_edge)");
 }
 
+DisparityFrame disparity_frame(const UserPair& u) {
+  const cv::Mat l = host::io::read_grey_image(u.left), r = host::io::read_grey_image(u.right);
+  if (l.size() != r.size())
+    throw std::invalid_argument("vectors disparity: " + u.left.string() + " is " +
+                                std::to_string(l.cols) + "x" + std::to_string(l.rows) + ", " +
+                                u.right.string() + " " + std::to_string(r.cols) + "x" +
+                                std::to_string(r.rows) + ": a pair has one size");
+  const cv::Rect roi = u.roi.area() > 0 ? u.roi : cv::Rect(0, 0, l.cols, l.rows);
+  if ((roi & cv::Rect(0, 0, l.cols, l.rows)) != roi)
+    throw std::invalid_argument("vectors disparity: --roi " + std::to_string(roi.x) + " " +
+                                std::to_string(roi.y) + " " + std::to_string(roi.width) + " " +
+                                std::to_string(roi.height) + " is not inside the " +
+                                std::to_string(l.cols) + "x" + std::to_string(l.rows) + " pair");
+  if (roi.width > kMaxWidthPx || roi.height > kMaxHeight || roi.width % kPpc != 0)
+    throw std::invalid_argument(
+        "vectors disparity: a " + std::to_string(roi.width) + "x" + std::to_string(roi.height) +
+        " frame does not fit the vector build (up to " + std::to_string(kMaxWidthPx) + "x" +
+        std::to_string(kMaxHeight) + ", width a multiple of " + std::to_string(kPpc) +
+        "): give --roi X Y W H");
+  if (u.dmin < 0 || u.dmin + kNumDisp > roi.width)
+    throw std::invalid_argument("vectors disparity: --dmin " + std::to_string(u.dmin) +
+                                " leaves no column with all 16 candidates in a " +
+                                std::to_string(roi.width) + "-px frame");
+  Frame f;
+  f.left = l(roi).clone();
+  f.right = r(roi).clone();
+  f.window = u.window;
+  f.mode = u.mode;
+  f.cfg = disparity::mode_config(f.mode, roi.width, roi.height, u.dmin);
+  f.cfg.edge_candidates = u.edge_candidates;
+  std::ostringstream d;
+  d << "scw disparity stage, " << disparity::mode_name(f.mode) << " mode, N = " << f.window
+    << ", d " << u.dmin << ".." << u.dmin + kNumDisp - 1 << ", edge_candidates "
+    << u.edge_candidates << ": " << u.left.filename().string() << " (left) and "
+    << u.right.filename().string() << " (right), grey by cv::imread IMREAD_GRAYSCALE, crop x "
+    << roi.x << " y " << roi.y << " " << roi.width << "x" << roi.height;
+  f.description = d.str();
+  return f;
+}
+
 DisparitySetSummary write_disparity_set(const DisparityFrame& f, const std::filesystem::path& dir) {
   if (f.window == 5) return run<5>(f, dir);
   if (f.window == 9) return run<9>(f, dir);

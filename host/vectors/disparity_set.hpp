@@ -38,6 +38,22 @@ const std::vector<std::string>& disparity_presets();
 ///     (throws std::runtime_error when a file is missing).
 DisparityFrame disparity_preset(const std::string& name, const std::filesystem::path& data_dir);
 
+/// A pair of the user's: two image files (read as grey), the crop of them to match (empty: the
+/// whole image) and the stage's settings.
+struct UserPair {
+  std::filesystem::path left, right;
+  cv::Rect roi;
+  int window = 9;  // 5 or 9
+  disparity::Mode mode = disparity::Mode::opencv;
+  int dmin = 0;
+  int edge_candidates = 0;
+};
+
+/// The frame of a user's pair. Throws std::invalid_argument naming what does not fit (sizes, the
+/// crop, the vector build's 128 x 64 frame, the range) and std::runtime_error for a file that is
+/// not an image.
+DisparityFrame disparity_frame(const UserPair& pair);
+
 /// What write_disparity_set() checked and wrote, for the CLI to print.
 struct DisparitySetSummary {
   int width = 0, height = 0, ppc = 0, window = 0, dmin = 0, dmax = 0;

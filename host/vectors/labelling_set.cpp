@@ -419,6 +419,33 @@ LabellingPreset labelling_preset(const std::string& name, const std::filesystem:
                               "' (there are: shapes, tsukuba, overflow)");
 }
 
+LabellingPreset labelling_frame(const UserMap& u) {
+  const cv::Mat m = cv::imread(u.disparity.string(), cv::IMREAD_UNCHANGED);
+  if (m.empty() || m.type() != CV_16UC1)
+    throw std::runtime_error("vectors labelling: '" + u.disparity.string() +
+                             "' is not a 16-bit one-channel image; give the Q11.4 map "
+                             "`scw disparity --out16` writes");
+  const cv::Rect roi = u.roi.area() > 0 ? u.roi : cv::Rect(0, 0, m.cols, m.rows);
+  if ((roi & cv::Rect(0, 0, m.cols, m.rows)) != roi || roi.width > kW || roi.height > kH)
+    throw std::invalid_argument("vectors labelling: the crop x " + std::to_string(roi.x) + " y " +
+                                std::to_string(roi.y) + " " + std::to_string(roi.width) + "x" +
+                                std::to_string(roi.height) + " of the " + std::to_string(m.cols) +
+                                "x" + std::to_string(m.rows) + " map must lie inside it and fit " +
+                                "the vector build (up to " + std::to_string(kW) + "x" +
+                                std::to_string(kH) + "): give --roi X Y W H");
+  Preset p;
+  p.tiles_x = u.tiles_x;
+  p.tiles_y = u.tiles_y;
+  p.cfg = labelling::grid_config(roi.width, roi.height, u.tiles_x, u.tiles_y, u.floor, u.min_area);
+  p.frames = {{"user", m(roi).clone(), Expect::kClean}};
+  std::ostringstream s;
+  s << "scw labelling stage: a " << roi.width << "x" << roi.height << " crop (x " << roi.x << " y "
+    << roi.y << ") of " << u.disparity.filename().string() << " (Q11.4), " << u.tiles_x << "x"
+    << u.tiles_y << " tiles, floor " << u.floor << ", min area " << u.min_area;
+  p.description = s.str();
+  return p;
+}
+
 LabellingSetSummary write_labelling_set(const LabellingPreset& p,
                                         const std::filesystem::path& dir) {
   hls::labelling::check_config<VecParams>(p.cfg);

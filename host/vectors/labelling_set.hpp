@@ -50,6 +50,20 @@ const std::vector<std::string>& labelling_presets();
 ///   overflow: a tile overflow and an object overflow, then a normal frame.
 LabellingPreset labelling_preset(const std::string& name, const std::filesystem::path& data_dir);
 
+/// A disparity map of the user's: a 16-bit PNG of Q11.4 values (as `scw disparity --out16`
+/// writes), the crop of it (empty: all of it) and the stage's settings.
+struct UserMap {
+  std::filesystem::path disparity;
+  cv::Rect roi;
+  int tiles_x = 2, tiles_y = 2;
+  int floor = 0, min_area = 4;
+};
+
+/// One frame from a user's map; every object must come out (a frame that overflows the build's
+/// tables fails the check). Throws std::invalid_argument naming what does not fit and
+/// std::runtime_error for a file that is not a 16-bit map.
+LabellingPreset labelling_frame(const UserMap& map);
+
 /// What write_labelling_set() checked and wrote, for the CLI to print.
 struct LabellingSetSummary {
   std::size_t frames = 0, words = 0;

@@ -9,7 +9,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
+#include "hls/pipeline/pipeline_params.hpp"
 #include "hls/rectify/map_taps.hpp"
 #include "host/io/image_file.hpp"
 #include "host/rectify/calibration.hpp"
@@ -27,17 +29,13 @@ namespace {
 using hls::rectify::MapPoint;
 using Frame = RectifyFrame;
 
-constexpr int kMaxWidthPx = RectifyRtlParams::kMaxWidthPx;
-constexpr int kMaxHeight = RectifyRtlParams::kMaxHeight;
-constexpr int kRows = kRectifyVecRows;
 constexpr int kFracBits = RectifyRtlParams::kFracBits;
 constexpr int kRtlPpc = kRectifyVecRtlPpc;
 
-// Synthetic sets: a small frame; the chessboard sets: a crop of the bundled 640 x 480 pair.
+// Synthetic sets: a small frame; the chessboard sets: a crop of the bundled 640 x 480 pair
+// (rectify_preset's size), or all of it.
 constexpr int kSynthWidth = 64;
 constexpr int kSynthHeight = 32;
-constexpr int kCropWidth = 128;
-constexpr int kCropHeight = 96;
 
 /// A 64 x 32 grey test card: 8 x 8 checks, a slow gradient and a fixed integer hash for
 /// texture, so every output pixel's four taps differ and the rounding is exercised.
@@ -158,7 +156,7 @@ Crop crop_camera(const cv::Mat& raw, const rectify::FixedMap& full, cv::Rect roi
   return c;
 }
 
-Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, bool right) {
+Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, cv::Size size, bool right) {
   const cv::Mat left_raw = read_grey(dir / "left01.jpg");
   const cv::Mat right_raw = read_grey(dir / "right01.jpg");
   const std::string calib_name = "derived_stereo_calibration_helper.yml";
@@ -169,11 +167,12 @@ Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, bool right)
   const auto rect = rectify::rectify_calibration(calib);
   const auto full_l = rectify::quantise_map(rect.map1_x, rect.map1_y, kFracBits);
   const auto full_r = rectify::quantise_map(rect.map2_x, rect.map2_y, kFracBits);
-  const cv::Rect roi(roi_at.x, roi_at.y, kCropWidth, kCropHeight);
+  if (size.area() == 0) size = {full_l.width, full_l.height};
+  const cv::Rect roi(roi_at, size);
   if ((roi & cv::Rect(0, 0, full_l.width, full_l.height)) != roi)
     throw std::runtime_error("--roi " + std::to_string(roi.x) + " " + std::to_string(roi.y) +
-                             ": the " + std::to_string(kCropWidth) + " x " +
-                             std::to_string(kCropHeight) + " ROI must lie inside the " +
+                             ": the " + std::to_string(roi.width) + " x " +
+                             std::to_string(roi.height) + " ROI must lie inside the " +
                              std::to_string(full_l.width) + " x " + std::to_string(full_l.height) +
                              " rectified image");
   const Crop cl = crop_camera(left_raw, full_l, roi, "chessboard left");
@@ -252,13 +251,13 @@ void check_rtl(const RectifyRtl& rtl, const hls::rectify::RectifyConfig& cfg,
   sum.rtl_beats = rr.run.out.size();
 }
 
-template <int P>
+template <typename Params>
 void write_files(const std::filesystem::path& dir, const Frame& f, int lead_rows,
-                 const std::vector<typename RectifyVecParams<P>::pixel_beat>& raw_beats,
-                 const std::vector<typename RectifyVecParams<P>::map_beat>& map_beats,
-                 const std::vector<typename RectifyVecParams<P>::pixel_beat>& expect,
+                 const std::vector<typename Params::pixel_beat>& raw_beats,
+                 const std::vector<typename Params::map_beat>& map_beats,
+                 const std::vector<typename Params::pixel_beat>& expect,
                  const std::vector<std::uint8_t>& ref) {
-  using Params = RectifyVecParams<P>;
+  constexpr int P = Params::kPpc;
   const int w = f.raw.cols, h = f.raw.rows;
   nlohmann::json config = {{"width", w},
                            {"height", h},
@@ -282,16 +281,19 @@ void write_files(const std::filesystem::path& dir, const Frame& f, int lead_rows
   vw.finish();
 }
 
-template <int P>
+template <typename Params>
 RectifySetSummary run(const Frame& f, const std::string& preset, const sim::StallPattern& pattern,
                       const RectifyRtl& rtl, const std::filesystem::path& dir) {
-  using Params = RectifyVecParams<P>;
+  constexpr int P = Params::kPpc;
   using PixelBeat = typename Params::pixel_beat;
   using MapBeat = typename Params::map_beat;
   const int w = f.raw.cols, h = f.raw.rows;
-  if (w > kMaxWidthPx || h > kMaxHeight || w % P != 0 || w / P < 2)
-    throw std::logic_error("vectors rectify: frame does not fit the vector configuration");
-  const auto plan = rectify::plan_for_stage(f.windows, kRows, "vectors rectify " + preset);
+  if (w > Params::kMaxWidthPx || h > Params::kMaxHeight || w % P != 0 || w / P < 2)
+    throw std::invalid_argument("vectors rectify: a " + std::to_string(w) + "x" +
+                                std::to_string(h) + " frame does not fit the build (up to " +
+                                std::to_string(Params::kMaxWidthPx) + "x" +
+                                std::to_string(Params::kMaxHeight) + ")");
+  const auto plan = rectify::plan_for_stage(f.windows, Params::kRows, "vectors rectify " + preset);
   const hls::rectify::RectifyConfig cfg{w, h, plan.lead_rows};
 
   const cv::Mat raw = f.raw.isContinuous() ? f.raw : f.raw.clone();
@@ -307,12 +309,12 @@ RectifySetSummary run(const Frame& f, const std::string& preset, const sim::Stal
   check_run("C++ model", rc, cpp->kernel().error(), expect, w / P);
   RectifySetSummary sum;
   if (rtl) {
-    if constexpr (P == kRtlPpc)
+    if constexpr (std::is_same_v<Params, RectifyRtlParams>)
       check_rtl(rtl, cfg, raw_beats, map_beats, pattern, expect, rc.trace, sum);
     else
-      check_rectify_rtl_ppc(P);
+      check_rectify_rtl_ppc(P, "vectors");
   }
-  write_files<P>(dir, f, plan.lead_rows, raw_beats, map_beats, expect, ref);
+  write_files<Params>(dir, f, plan.lead_rows, raw_beats, map_beats, expect, ref);
   sum.width = w;
   sum.height = h;
   sum.ppc = P;
@@ -321,6 +323,7 @@ RectifySetSummary run(const Frame& f, const std::string& preset, const sim::Stal
   sum.stalls = pattern.name();
   sum.lead_rows = plan.lead_rows;
   sum.rows_needed = plan.rows_needed;
+  sum.rows = Params::kRows;
   return sum;
 }
 
@@ -333,33 +336,57 @@ const std::vector<std::string>& rectify_presets() {
 }
 
 RectifyFrame rectify_preset(const std::string& name, const std::filesystem::path& data_dir,
-                            cv::Point roi) {
+                            cv::Point roi, cv::Size size) {
   if (name == "shift" || name == "rotation" || name == "barrel") return synthetic(name);
   if (name == "chessboard_left" || name == "chessboard_right")
-    return chessboard(data_dir, roi, name == "chessboard_right");
+    return chessboard(data_dir, roi, size, name == "chessboard_right");
   throw std::invalid_argument("vectors rectify: no preset '" + name +
                               "' (there are: shift, rotation, barrel, chessboard_left, "
                               "chessboard_right)");
 }
 
-void check_rectify_rtl_ppc(int ppc) {
+void check_rectify_rtl_ppc(int ppc, const std::string& build) {
+  if (build != "vectors")
+    throw std::runtime_error(
+        "vectors rectify: the CLI Verilates scw_rectify at the vectors build "
+        "only; use --engine cpp for the " +
+        build + " build");
   if (ppc != kRtlPpc)
     throw std::runtime_error(
         "vectors rectify: the CLI Verilates scw_rectify at P = " + std::to_string(kRtlPpc) +
         " only; use --engine cpp for P = " + std::to_string(ppc));
 }
 
+const std::vector<std::string>& rectify_builds() {
+  static const std::vector<std::string> kNames = {"vectors", "thesis"};
+  return kNames;
+}
+
 RectifySetSummary write_rectify_set(const RectifyFrame& f, const std::string& preset, int ppc,
                                     const sim::StallPattern& stalls, const RectifyRtl& rtl,
-                                    const std::filesystem::path& dir) {
-  if (rtl) check_rectify_rtl_ppc(ppc);
+                                    const std::filesystem::path& dir, const std::string& build) {
+  if (rtl) check_rectify_rtl_ppc(ppc, build);
+  if (build == "thesis") {
+    switch (ppc) {
+      case 1:
+        return run<hls::pipeline::ThesisPipeline<1>::rectify>(f, preset, stalls, rtl, dir);
+      case 2:
+        return run<hls::pipeline::ThesisPipeline<2>::rectify>(f, preset, stalls, rtl, dir);
+      case 4:
+        return run<hls::pipeline::ThesisPipeline<4>::rectify>(f, preset, stalls, rtl, dir);
+      default:
+        break;
+    }
+  } else if (build != "vectors") {
+    throw std::invalid_argument("vectors rectify: no build '" + build + "' (vectors, thesis)");
+  }
   switch (ppc) {
     case 1:
-      return run<1>(f, preset, stalls, rtl, dir);
+      return run<RectifyVecParams<1>>(f, preset, stalls, rtl, dir);
     case 2:
-      return run<2>(f, preset, stalls, rtl, dir);
+      return run<RectifyVecParams<2>>(f, preset, stalls, rtl, dir);
     case 4:
-      return run<4>(f, preset, stalls, rtl, dir);
+      return run<RectifyVecParams<4>>(f, preset, stalls, rtl, dir);
     default:
       throw std::invalid_argument("vectors rectify: P = " + std::to_string(ppc) +
                                   "; the sets are built for 1, 2 or 4 pixels a beat");

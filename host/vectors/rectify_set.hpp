@@ -42,8 +42,9 @@ const std::vector<std::string>& rectify_presets();
 /// derived_stereo_calibration_helper.yml from `data_dir` and rectify the 128 x 96 output ROI
 /// whose top-left is `roi`; both throw std::runtime_error naming what is missing or wrong.
 /// Throws std::invalid_argument naming the presets for another name.
+/// `size` is the chessboard ROI's (128 x 96 by default; an empty size: the whole image).
 RectifyFrame rectify_preset(const std::string& name, const std::filesystem::path& data_dir,
-                            cv::Point roi);
+                            cv::Point roi, cv::Size size = {128, 96});
 
 /// What an RTL run of the stage at RectifyRtlParams gave: its beats, cycles and trace, and its
 /// error bits at the end.
@@ -58,8 +59,14 @@ using RectifyRtl = std::function<RectifyRtlRun(
     const hls::rectify::RectifyConfig&, const std::vector<RectifyRtlParams::pixel_beat>&,
     const std::vector<RectifyRtlParams::map_beat>&, const sim::StallPattern&, std::size_t)>;
 
-/// Throws std::runtime_error, naming the RTL's one beat width, unless it is `ppc`.
-void check_rectify_rtl_ppc(int ppc);
+/// Throws std::runtime_error, naming the RTL's one build and beat width, unless they are `build`
+/// and `ppc`.
+void check_rectify_rtl_ppc(int ppc, const std::string& build = "vectors");
+
+/// The builds a set is made at: "vectors" (RectifyVecParams: frames up to 128 x 96, 32 raw rows;
+/// the CLI Verilates it) and "thesis" (hls::pipeline::ThesisPipeline's stage: 1280 x 480, 64
+/// rows; the C++ model only).
+const std::vector<std::string>& rectify_builds();
 
 /// What write_rectify_set() checked and wrote, for the CLI to print.
 struct RectifySetSummary {
@@ -69,7 +76,7 @@ struct RectifySetSummary {
   std::string stalls;       // the pattern's name
   bool rtl = false;         // the RTL ran too and equalled the model cycle for cycle
   std::size_t rtl_beats = 0;
-  int lead_rows = 0, rows_needed = 0;
+  int lead_rows = 0, rows_needed = 0, rows = 0;  // rows: the build's raw rows in flight
 };
 
 /// Runs `f` through sim::RectifyModel at `ppc` (1, 2 or 4) beats under `stalls` (and through
@@ -80,6 +87,7 @@ struct RectifySetSummary {
 /// `preset` names the set in the lead planner's messages.
 RectifySetSummary write_rectify_set(const RectifyFrame& f, const std::string& preset, int ppc,
                                     const sim::StallPattern& stalls, const RectifyRtl& rtl,
-                                    const std::filesystem::path& dir);
+                                    const std::filesystem::path& dir,
+                                    const std::string& build = "vectors");
 
 }  // namespace scw::vectors

@@ -58,7 +58,10 @@ module tb_line_buffer_replay #(
     .out_sof_o(out_sof), .out_eol_o(out_eol), .err_o(err)
   );
 
-  initial #(Beats * 8 * 20 + 1000) $fatal(1, "timeout after %0d of %0d beats", o, Beats);
+  // A bound in clocks, not a delay: Verilator 5.006 keeps a delay in 32 bits of the time
+  // precision (ps), so a large set's delay wrapped and fired early.
+  always @(posedge clk)
+    if (cyc > Beats * 20 + 125) $fatal(1, "timeout after %0d of %0d beats", o, Beats);
   always @(posedge clk) begin
     if (out_valid && out_ready) begin
       if ({out_eol, out_sof, out_data} !== exp_mem[o])
