@@ -71,8 +71,9 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                   "backpressure, both or random:<seed>");
   cmd->add_option("--config", o->build,
                   "vectors: frames up to 128 x 96 (the committed sets; --engine rtl checks the "
-                  "Verilated stage); thesis: the thesis build (1280 x 480, 64 raw rows; the "
-                  "chessboard presets rectify the whole 640 x 480 image; --engine cpp)")
+                  "Verilated stage); thesis: the thesis build (1280 x 480, 64 raw rows; "
+                  "--engine cpp). The chessboard presets then take the whole image unless --roi "
+                  "and --size pick a band: this calibration's whole image needs 81 raw rows")
       ->check(CLI::IsMember(vec::rectify_builds()));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir,
@@ -90,7 +91,7 @@ void add_vectors_rectify_command(CLI::App& vectors) {
     const bool whole = o->build == "thesis" && o->size.empty();
     const cv::Size size = !o->size.empty() ? cv::Size(o->size[0], o->size[1])
                           : whole          ? cv::Size()
-                                           : cv::Size(128, 96);
+                                           : vec::kRectifyCropSize;
     const auto f = vec::rectify_preset(o->preset, o->data_dir,
                                        whole ? cv::Point() : cv::Point(o->roi[0], o->roi[1]), size);
     const vec::RectifyRtl engine = rtl ? vec::RectifyRtl(run_rtl) : vec::RectifyRtl();

@@ -42,9 +42,11 @@ const std::vector<std::string>& rectify_presets();
 /// derived_stereo_calibration_helper.yml from `data_dir` and rectify the 128 x 96 output ROI
 /// whose top-left is `roi`; both throw std::runtime_error naming what is missing or wrong.
 /// Throws std::invalid_argument naming the presets for another name.
-/// `size` is the chessboard ROI's (128 x 96 by default; an empty size: the whole image).
+/// The chessboard presets' ROI at the vectors build (the committed sets').
+inline const cv::Size kRectifyCropSize{128, 96};
+/// `size` is the chessboard ROI's (an empty size: the whole image).
 RectifyFrame rectify_preset(const std::string& name, const std::filesystem::path& data_dir,
-                            cv::Point roi, cv::Size size = {128, 96});
+                            cv::Point roi, cv::Size size = kRectifyCropSize);
 
 /// What an RTL run of the stage at RectifyRtlParams gave: its beats, cycles and trace, and its
 /// error bits at the end.
