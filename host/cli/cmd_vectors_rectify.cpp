@@ -50,17 +50,32 @@ void add_vectors_rectify_command(CLI::App& vectors) {
     std::string preset, out;
     int ppc = vec::kRectifyVecRtlPpc;
     std::string engine = "rtl", stalls = "both", data_dir = "data/chessboard", build = "vectors";
+    vec::UserCalibratedPair pair;
+    std::string camera = "left";
     std::vector<int> roi{352, 112};  // chessboard: top-left of the rectified ROI (on the board)
     std::vector<int> size;           // chessboard: the ROI's size (default: 128 x 96, thesis: all)
   };
   auto o = std::make_shared<Options>();
   auto* cmd = vectors.add_subcommand(
       "rectify", "Write a rectify golden vector set (raw + map in, rectified pixels out)");
-  cmd->add_option("--preset", o->preset,
-                  "shift, rotation, barrel (64x32 test card) or chessboard_left, "
-                  "chessboard_right (128x96 crop of the bundled pair, real calibration)")
-      ->required()
-      ->check(CLI::IsMember(vec::rectify_presets()));
+  auto* preset = cmd->add_option("--preset", o->preset,
+                                 "shift, rotation, barrel (64x32 test card) or chessboard_left, "
+                                 "chessboard_right (128x96 crop of the bundled pair, real "
+                                 "calibration)");
+  preset->check(CLI::IsMember(vec::rectify_presets()));
+  auto* left = cmd->add_option("--left", o->pair.left, "Your raw left image (instead of a preset)")
+                   ->check(CLI::ExistingFile);
+  auto* right =
+      cmd->add_option("--right", o->pair.right, "Your raw right image")->check(CLI::ExistingFile);
+  auto* calib = cmd->add_option("--calib", o->pair.calib,
+                                "Your pair's calibration: OpenCV FileStorage M1 D1 M2 D2 R T, as "
+                                "scw run --calib reads it")
+                    ->check(CLI::ExistingFile);
+  left->needs(right)->needs(calib)->excludes(preset);
+  right->needs(left);
+  calib->needs(left);
+  cmd->add_option("--camera", o->camera, "With --left/--right: the camera the set rectifies")
+      ->check(CLI::IsMember({"left", "right"}));
   cmd->add_option("--ppc", o->ppc, "Pixels per beat")->check(CLI::IsMember({1, 2, 4}));
   cmd->add_option("--engine", o->engine,
                   "rtl: expected output from the Verilated stage (P = 2), also checked against "
@@ -78,12 +93,17 @@ void add_vectors_rectify_command(CLI::App& vectors) {
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir,
                   "Folder with left01.jpg, right01.jpg and derived_stereo_calibration_helper.yml");
-  cmd->add_option("--roi", o->roi, "Chessboard: top-left X Y of the rectified ROI")->expected(2);
+  cmd->add_option("--roi", o->roi,
+                  "Chessboard or your pair: top-left X Y of the rectified ROI (default 352 112)")
+      ->expected(2);
   cmd->add_option("--size", o->size,
-                  "Chessboard: W H of the rectified ROI (default 128 96; --config thesis: the "
-                  "whole image from 0 0)")
+                  "Chessboard or your pair: W H of the rectified ROI (default 128 96; --config "
+                  "thesis: the whole image from 0 0)")
       ->expected(2);
   cmd->callback([o] {
+    if (o->preset.empty() && o->pair.left.empty())
+      throw CLI::ValidationError(
+          "give --preset NAME, or your raw pair with --left L --right R --calib C");
     const auto stalls = sim::StallPattern::parse(o->stalls);  // a bad pattern before any work
     const bool rtl = o->engine == "rtl";
     if (rtl) vec::check_rectify_rtl_ppc(o->ppc, o->build);
@@ -92,10 +112,13 @@ void add_vectors_rectify_command(CLI::App& vectors) {
     const cv::Size size = !o->size.empty() ? cv::Size(o->size[0], o->size[1])
                           : whole          ? cv::Size()
                                            : vec::kRectifyCropSize;
-    const auto f = vec::rectify_preset(o->preset, o->data_dir,
-                                       whole ? cv::Point() : cv::Point(o->roi[0], o->roi[1]), size);
+    const cv::Point roi = whole ? cv::Point() : cv::Point(o->roi[0], o->roi[1]);
+    o->pair.right_camera = o->camera == "right";
+    const auto f = o->preset.empty() ? vec::rectify_frame(o->pair, roi, size)
+                                     : vec::rectify_preset(o->preset, o->data_dir, roi, size);
+    const std::string name = o->preset.empty() ? o->camera + " camera" : o->preset;
     const vec::RectifyRtl engine = rtl ? vec::RectifyRtl(run_rtl) : vec::RectifyRtl();
-    print(vec::write_rectify_set(f, o->preset, o->ppc, stalls, engine, o->out, o->build), o->out);
+    print(vec::write_rectify_set(f, name, o->ppc, stalls, engine, o->out, o->build), o->out);
   });
 }
 

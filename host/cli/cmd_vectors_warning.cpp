@@ -6,6 +6,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/value_checks.hpp"
 #include "host/vectors/warning_set.hpp"
 
 namespace scw::cli {
@@ -14,20 +15,66 @@ namespace vec = scw::vectors;
 
 void add_vectors_warning_command(CLI::App& vectors) {
   struct Options {
-    std::string preset, out;
+    std::string preset, out, rule = "spread";
+    vec::UserTables user;
+    std::vector<int> size;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = vectors.add_subcommand(
       "warning", "Write a warning golden vector set (object tables in, frame results out)");
-  cmd->add_option("--preset", o->preset,
-                  "thesis (hand-placed objects, one per rule of eq. 5.2, incl. the worked "
-                  "example), random (64 seeded random tables) or malformed (broken tables, each "
-                  "followed by a good one)")
-      ->required()
-      ->check(CLI::IsMember(vec::warning_presets()));
+  auto* preset = cmd->add_option(
+      "--preset", o->preset,
+      "thesis (hand-placed objects, one per rule of eq. 5.2, incl. the worked example), random "
+      "(64 seeded random tables) or malformed (broken tables, each followed by a good one)");
+  preset->check(CLI::IsMember(vec::warning_presets()));
+  auto* objects =
+      cmd->add_option("--objects", o->user.objects,
+                      "Your object tables (instead of a preset): CSV with a frame column and the "
+                      "object word's fields by name, as a labelling set's expected_objects.csv")
+          ->check(CLI::ExistingFile);
+  objects->excludes(preset);
+  cmd->add_option("--status", o->user.status,
+                  "With --objects: each frame's flags (frame, tile_overflow, object_overflow, "
+                  "stream_error), as a labelling set's expected_status.csv")
+      ->check(CLI::ExistingFile)
+      ->needs(objects);
+  auto& w = o->user.setup;
+  cmd->add_option("--image-size", o->size, "With --objects: W H of the image (default 1280 480)")
+      ->expected(2)
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--focal", w.focal_px, "With --objects: focal length, px")
+      ->capture_default_str()
+      ->check(positive("px", "700"));
+  cmd->add_option("--baseline", w.baseline_m, "With --objects: baseline, m")
+      ->capture_default_str()
+      ->check(positive("m", "0.54"));
+  cmd->add_option("--cx", w.cu_px, "With --objects: principal point u, px (default: centre)")
+      ->check(non_negative("px", "639.5"));
+  cmd->add_option("--cy", w.cv_px, "With --objects: principal point v, px (default: centre)")
+      ->check(non_negative("px", "239.5"));
+  cmd->add_option("--max-disp", w.d_limit_px,
+                  "With --objects: the top of the disparity search; objects reaching it are too "
+                  "close")
+      ->capture_default_str()
+      ->check(positive("px", "64"));
+  cmd->add_option("--distance-rule", o->rule, "With --objects: spread (default) or closest")
+      ->check(CLI::IsMember({"spread", "closest"}));
+  cmd->add_option("--spread-k", w.spread_k, "With --objects: k of the spread rule")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 15.9375));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->callback([o] {
-    const auto s = vec::write_warning_set(vec::warning_preset(o->preset), o->out);
+    if (o->preset.empty() && o->user.objects.empty())
+      throw CLI::ValidationError("give --preset NAME, or your tables with --objects FILE.csv");
+    if (!o->size.empty()) {
+      o->user.width = o->size[0];
+      o->user.height = o->size[1];
+    }
+    o->user.setup.distance_rule = o->rule == "closest" ? hls::warning::DistanceRule::kClosest
+                                                       : hls::warning::DistanceRule::kSpread;
+    const auto p =
+        o->preset.empty() ? vec::warning_user_preset(o->user) : vec::warning_preset(o->preset);
+    const auto s = vec::write_warning_set(p, o->out);
     std::cout << "C++ model: " << s.frames << " frames, " << s.words_in << " words in, "
               << s.results << " results, checked against a plain fold of evaluate() (" << s.cycles
               << " cycles)\n";

@@ -85,14 +85,7 @@ Frame synthetic(const std::string& preset) {
   return f;
 }
 
-cv::Mat read_grey(const std::filesystem::path& p) {
-  if (!std::filesystem::exists(p))
-    throw std::runtime_error("no '" + p.string() +
-                             "'; the chessboard sets need data/chessboard (give --data-dir)");
-  return host::io::read_grey_image(p);
-}
-
-/// One camera of the chessboard pair, cropped: the map of the output ROI expressed relative to
+/// One camera of a calibrated pair, cropped: the map of the output ROI expressed relative to
 /// a raw crop of the same size that holds every tap the ROI reads.
 struct Crop {
   cv::Mat raw;                         // the raw crop
@@ -156,14 +149,24 @@ Crop crop_camera(const cv::Mat& raw, const rectify::FixedMap& full, cv::Rect roi
   return c;
 }
 
-Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, cv::Size size, bool right) {
-  const cv::Mat left_raw = read_grey(dir / "left01.jpg");
-  const cv::Mat right_raw = read_grey(dir / "right01.jpg");
-  const std::string calib_name = "derived_stereo_calibration_helper.yml";
-  const auto calib = rectify::load_stereo_calibration((dir / calib_name).string(), left_raw.size());
-  for (const cv::Mat* img : {&left_raw, &right_raw})
-    if (img->size() != calib.image_size)
-      throw std::runtime_error("the chessboard images are not the calibration's size");
+/// One camera of a calibrated raw pair: the output ROI at `roi_at` of `size` (empty: the whole
+/// image), rectified with the pair's calibration (both cameras' maps plan the one lead).
+/// `source` names the camera's image in the description.
+Frame calibrated(const UserCalibratedPair& u, cv::Point roi_at, cv::Size size,
+                 const std::string& source) {
+  const cv::Mat left_raw = host::io::read_grey_image(u.left);
+  const cv::Mat right_raw = host::io::read_grey_image(u.right);
+  const bool right = u.right_camera;
+  const auto calib = rectify::load_stereo_calibration(u.calib.string(), left_raw.size());
+  for (const auto* p : {&u.left, &u.right}) {
+    const cv::Mat& img = p == &u.left ? left_raw : right_raw;
+    if (img.size() != calib.image_size)
+      throw std::runtime_error("vectors rectify: " + p->string() + " is " +
+                               std::to_string(img.cols) + "x" + std::to_string(img.rows) +
+                               ", the calibration " + u.calib.string() + " is for " +
+                               std::to_string(calib.image_size.width) + "x" +
+                               std::to_string(calib.image_size.height) + " images");
+  }
   const auto rect = rectify::rectify_calibration(calib);
   const auto full_l = rectify::quantise_map(rect.map1_x, rect.map1_y, kFracBits);
   const auto full_r = rectify::quantise_map(rect.map2_x, rect.map2_y, kFracBits);
@@ -175,8 +178,8 @@ Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, cv::Size si
                              std::to_string(roi.height) + " ROI must lie inside the " +
                              std::to_string(full_l.width) + " x " + std::to_string(full_l.height) +
                              " rectified image");
-  const Crop cl = crop_camera(left_raw, full_l, roi, "chessboard left");
-  const Crop cr = crop_camera(right_raw, full_r, roi, "chessboard right");
+  const Crop cl = crop_camera(left_raw, full_l, roi, u.left.filename().string());
+  const Crop cr = crop_camera(right_raw, full_r, roi, u.right.filename().string());
   const Crop& c = right ? cr : cl;
 
   Frame f;
@@ -186,14 +189,25 @@ Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, cv::Size si
   f.windows = {rectify::row_window(as_fixed(cl.map, roi.width, roi.height)),
                rectify::row_window(as_fixed(cr.map, roi.width, roi.height))};
   std::ostringstream d;
-  d << "scw_rectify: data/chessboard/" << (right ? "right01.jpg" : "left01.jpg")
-    << " rectified with " << calib_name << " (stereoRectify alpha " << rect.alpha
-    << ", CALIB_ZERO_DISPARITY): output ROI x " << roi.x << " y " << roi.y << " " << roi.width
-    << "x" << roi.height << " of the " << full_l.width << "x" << full_l.height
-    << " rectified image; raw input = the crop at x " << c.origin.x << " y " << c.origin.y
-    << ", map shifted to it (equal to rectifying the whole image)";
+  d << "scw_rectify: " << source << " rectified with " << u.calib.filename().string()
+    << " (stereoRectify alpha " << rect.alpha << ", CALIB_ZERO_DISPARITY): output ROI x " << roi.x
+    << " y " << roi.y << " " << roi.width << "x" << roi.height << " of the " << full_l.width << "x"
+    << full_l.height << " rectified image; raw input = the crop at x " << c.origin.x << " y "
+    << c.origin.y << ", map shifted to it (equal to rectifying the whole image)";
   f.description = d.str();
   return f;
+}
+
+/// The bundled chessboard pair: its files must be in `dir`.
+Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, cv::Size size, bool right) {
+  const UserCalibratedPair u{dir / "left01.jpg", dir / "right01.jpg",
+                             dir / "derived_stereo_calibration_helper.yml", right};
+  for (const auto& p : {u.left, u.right, u.calib})
+    if (!std::filesystem::exists(p))
+      throw std::runtime_error("no '" + p.string() +
+                               "'; the chessboard sets need data/chessboard (give --data-dir)");
+  return calibrated(u, roi_at, size,
+                    std::string("data/chessboard/") + (right ? "right01.jpg" : "left01.jpg"));
 }
 
 nlohmann::json map_beat_layout(int p, int coord_bits) {
@@ -343,6 +357,13 @@ RectifyFrame rectify_preset(const std::string& name, const std::filesystem::path
   throw std::invalid_argument("vectors rectify: no preset '" + name +
                               "' (there are: shift, rotation, barrel, chessboard_left, "
                               "chessboard_right)");
+}
+
+RectifyFrame rectify_frame(const UserCalibratedPair& pair, cv::Point roi, cv::Size size) {
+  const auto& image = pair.right_camera ? pair.right : pair.left;
+  return calibrated(
+      pair, roi, size,
+      image.filename().string() + (pair.right_camera ? " (right" : " (left") + " camera)");
 }
 
 void check_rectify_rtl_ppc(int ppc, const std::string& build) {

@@ -48,6 +48,19 @@ inline const cv::Size kRectifyCropSize{128, 96};
 RectifyFrame rectify_preset(const std::string& name, const std::filesystem::path& data_dir,
                             cv::Point roi, cv::Size size = kRectifyCropSize);
 
+/// A raw pair of the user's and its calibration (OpenCV FileStorage M1 D1 M2 D2 R T, as `scw run
+/// --calib` reads it); a set is one camera of it.
+struct UserCalibratedPair {
+  std::filesystem::path left, right, calib;
+  bool right_camera = false;
+};
+/// The frame of one camera of a user's pair: the rectified ROI at `roi` of `size` (empty: the
+/// whole image). Throws std::runtime_error naming the file that is not an image or not the
+/// calibration's size, and the ROI that lies outside the image or whose taps span more raw rows
+/// or columns than the crop.
+RectifyFrame rectify_frame(const UserCalibratedPair& pair, cv::Point roi,
+                           cv::Size size = kRectifyCropSize);
+
 /// What an RTL run of the stage at RectifyRtlParams gave: its beats, cycles and trace, and its
 /// error bits at the end.
 struct RectifyRtlRun {

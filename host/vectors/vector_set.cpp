@@ -307,6 +307,32 @@ std::vector<std::vector<std::string>> parse_csv(const std::string& text, const F
   return rows;
 }
 
+}  // namespace
+
+CsvTable read_csv_file(const fs::path& path) {
+  FileEntry f;
+  f.name = path.string();
+  f.kind = "csv";
+  if (!fs::is_regular_file(path)) throw std::runtime_error(f.name + ": no such file");
+  const std::string text = read_bytes(path, f.name);
+  const auto lines = split_lines(text);
+  if (lines.empty()) throw std::runtime_error(f.name + ": is empty; expected a header row");
+  CsvTable t;
+  t.header = split_csv_line(lines[0], f, 1);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    t.rows.push_back(split_csv_line(lines[i], f, i + 1));
+    t.lines.push_back(i + 1);
+    if (t.rows.back().size() != t.header.size())
+      throw line_error(f, i + 1,
+                       "has " + std::to_string(t.rows.back().size()) + " values, the header has " +
+                           std::to_string(t.header.size()));
+  }
+  return t;
+}
+
+namespace {
+
 cv::Mat load_image(const fs::path& path, const FileEntry& f) {
   cv::Mat img = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
   if (img.empty()) throw std::runtime_error(f.name + ": cannot be decoded as " + f.kind);

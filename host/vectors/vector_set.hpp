@@ -100,6 +100,16 @@ class VectorWriter {
   bool finished_ = false;
 };
 
+/// A CSV file of the user's, in the sets' dialect (a header row, comma-separated unquoted values,
+/// '\n' line endings; blank lines skipped).
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;  // each as wide as the header
+  std::vector<std::size_t> lines;              // each row's line number in the file, from 1
+};
+/// Reads `path`; throws std::runtime_error naming the file and line of the first problem.
+CsvTable read_csv_file(const std::filesystem::path& path);
+
 /// A set opened for reading; every file was verified by open().
 class VectorSet {
  public:

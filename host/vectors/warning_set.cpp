@@ -12,6 +12,7 @@
 
 #include "hls/warning/warning.hpp"
 #include "host/vectors/labelling_set.hpp"
+#include "host/vectors/object_tables.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/core/stall.hpp"
 #include "sim/core/stream_check.hpp"
@@ -499,6 +500,34 @@ WarningPreset warning_preset(const std::string& name) {
   if (name == "malformed") return malformed();
   throw std::invalid_argument("vectors warning: no preset '" + name +
                               "' (there are: thesis, random, malformed)");
+}
+
+WarningPreset warning_user_preset(const UserTables& u) {
+  Preset p;
+  p.setup = u.setup;
+  p.width = u.width;
+  p.height = u.height;
+  if (p.setup.cu_px == 0.0 && p.setup.cv_px == 0.0) {  // as scw run: the image centre
+    p.setup.cu_px = 0.5 * (u.width - 1);
+    p.setup.cv_px = 0.5 * (u.height - 1);
+  }
+  const auto tables = read_object_tables(u.objects, u.status);
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    Frame f;
+    f.name = "frame " + std::to_string(i);
+    f.objects = tables[i].objects;
+    f.flags = tables[i].flags;
+    p.frames.push_back(std::move(f));
+  }
+  if (p.frames.empty())
+    throw std::runtime_error(u.objects.string() +
+                             ": no rows, and no status rows: no frame to send");
+  p.description = "scw warning stage: " + std::to_string(p.frames.size()) + " object tables from " +
+                  u.objects.filename().string() +
+                  (u.status.empty() ? "" : " and " + u.status.filename().string()) +
+                  ", objects in a " + std::to_string(u.width) + "x" + std::to_string(u.height) +
+                  " image; each frame checked against a plain fold of evaluate()";
+  return p;
 }
 
 WarningSetSummary write_warning_set(const WarningPreset& p, const std::filesystem::path& dir) {

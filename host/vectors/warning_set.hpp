@@ -59,6 +59,16 @@ const std::vector<std::string>& warning_presets();
 ///   malformed: every way a table can break the packet rules, each followed by a good one.
 WarningPreset warning_preset(const std::string& name);
 
+/// Object tables of the user's (host/vectors/object_tables.hpp) on the user's rig.
+struct UserTables {
+  std::filesystem::path objects, status;  // status: optional
+  host::warning::WarningSetup setup;      // cu_px = cv_px = 0: the image centre
+  int width = 1280, height = 480;         // the image the objects lie in
+};
+/// The preset of a user's tables: every frame checked only against the plain fold of evaluate().
+/// Throws std::runtime_error naming the file, line and column of a bad value.
+WarningPreset warning_user_preset(const UserTables& u);
+
 /// What write_warning_set() checked and wrote, for the CLI to print.
 struct WarningSetSummary {
   std::size_t frames = 0, words_in = 0, results = 0;
