@@ -30,18 +30,29 @@ void add_vectors_disparity_command(CLI::App& vectors) {
       "with the left edge band)");
   preset->check(CLI::IsMember(vec::disparity_presets()));
   auto* left =
-      cmd->add_option("--left", o->pair.left, "Your rectified left image (instead of a preset)")
+      cmd->add_option("--left", o->pair.left,
+                      "Your rectified left images (instead of a preset), a frame each, sent back "
+                      "to back")
           ->check(CLI::ExistingFile);
-  auto* right = cmd->add_option("--right", o->pair.right, "Your rectified right image")
+  auto* right = cmd->add_option("--right", o->pair.right, "Your rectified right images, as many")
                     ->check(CLI::ExistingFile);
   left->needs(right)->excludes(preset);
   right->needs(left);
   cmd->add_option("--roi", o->roi,
-                  "With --left/--right: X Y W H of the crop to match (the vector build takes up "
-                  "to 128 x 64)")
+                  "With --left/--right: X Y W H of the crop to match, the same in every frame "
+                  "(the vectors build takes up to 128 x 64)")
       ->expected(4);
-  cmd->add_option("--window", o->pair.window, "With --left/--right: N")
-      ->check(CLI::IsMember({5, 9}));
+  cmd->add_option("--window", o->pair.window,
+                  "With --left/--right: N (the vectors build: 5 or 9; small and tsukuba: 9; "
+                  "thesis: 21)")
+      ->check(CLI::IsMember({5, 9, 21}));
+  cmd->add_option("--config", o->pair.build,
+                  "With --left/--right: the build: vectors (P = 2, up to 128 x 64, 16 "
+                  "candidates; the committed sets), or the pipeline's small (128 x 96), tsukuba "
+                  "(384 x 288) or thesis (1280 x 480, N 21, 45 candidates) at --ppc")
+      ->check(CLI::IsMember(vec::disparity_builds()));
+  cmd->add_option("--ppc", o->pair.ppc, "With --config small, tsukuba or thesis: pixels a beat")
+      ->check(CLI::IsMember({1, 2, 4}));
   cmd->add_option("--mode", o->mode, "With --left/--right: thesis or opencv")
       ->check(CLI::IsMember({"thesis", "opencv"}));
   cmd->add_option("--dmin", o->pair.dmin, "With --left/--right: the first of the 16 candidates");
@@ -58,7 +69,7 @@ void add_vectors_disparity_command(CLI::App& vectors) {
     } else {
       o->pair.mode = disparity::mode_from_name(o->mode);
       if (!o->roi.empty()) o->pair.roi = cv::Rect(o->roi[0], o->roi[1], o->roi[2], o->roi[3]);
-      f = vec::disparity_frame(o->pair);
+      f = vec::disparity_frames(o->pair);
     }
     const auto s = vec::write_disparity_set(f, o->out);
     std::cout << "C++ model: " << s.beats << " beats equal the direct reference (" << s.cycles
@@ -66,9 +77,9 @@ void add_vectors_disparity_command(CLI::App& vectors) {
     if (s.known_shifts)
       std::cout << "known shifts: " << s.shifts_right << " of " << s.shifts_valid
                 << " computed pixels find their true disparity\n";
-    std::cout << "wrote " << o->out << "/ (" << s.width << "x" << s.height << ", P = " << s.ppc
-              << ", N = " << s.window << ", d " << s.dmin << ".." << s.dmax << ", " << s.mode
-              << " mode)\n";
+    std::cout << "wrote " << o->out << "/ (" << s.frames << " frame(s) of " << s.width << "x"
+              << s.height << ", " << s.build << " build, P = " << s.ppc << ", N = " << s.window
+              << ", d " << s.dmin << ".." << s.dmax << ", " << s.mode << " mode)\n";
   });
 }
 

@@ -30,20 +30,27 @@ void add_vectors_labelling_command(CLI::App& vectors) {
       "normal frame)");
   preset->check(CLI::IsMember(vec::labelling_presets()));
   cmd->add_option("--disparity", o->map.disparity,
-                  "Your disparity map instead of a preset: the 16-bit Q11.4 PNG `scw disparity "
-                  "--out16` writes")
+                  "Your disparity maps instead of a preset, one a frame, sent back to back: the "
+                  "16-bit Q11.4 PNGs `scw disparity --out16` writes")
       ->check(CLI::ExistingFile)
       ->excludes(preset);
-  cmd->add_option("--roi", o->roi, "With --disparity: X Y W H of the crop (up to 64 x 48)")
+  cmd->add_option("--roi", o->roi,
+                  "With --disparity: X Y W H of the crop, the same in every frame (the vectors "
+                  "build: up to 64 x 48)")
       ->expected(4);
   cmd->add_option("--tiles", o->tiles, "With --disparity: tiles across and down")->expected(2);
+  cmd->add_option("--config", o->map.build,
+                  "With --disparity: the build: vectors (up to 64 x 48, 4 x 4 tiles, 64 objects; "
+                  "the committed sets) or the pipeline's small, tsukuba or thesis (1280 x 480, "
+                  "8 x 4 tiles, 256 objects)")
+      ->check(CLI::IsMember(vec::labelling_builds()));
   cmd->add_option("--floor", o->map.floor, "With --disparity: the lowest valid value (Q11.4)");
   cmd->add_option("--min-area", o->map.min_area, "With --disparity: the smallest object");
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir, "Folder with truedisp.row3.col3.pgm");
   cmd->callback([o] {
     if (o->preset.empty() && o->map.disparity.empty())
-      throw CLI::ValidationError("give --preset NAME, or your map with --disparity FILE");
+      throw CLI::ValidationError("give --preset NAME, or your maps with --disparity FILE ...");
     vec::LabellingPreset p;
     if (!o->preset.empty()) {
       p = vec::labelling_preset(o->preset, o->data_dir);
@@ -53,7 +60,7 @@ void add_vectors_labelling_command(CLI::App& vectors) {
         o->map.tiles_x = o->tiles[0];
         o->map.tiles_y = o->tiles[1];
       }
-      p = vec::labelling_frame(o->map);
+      p = vec::labelling_frames(o->map);
     }
     const auto s = vec::write_labelling_set(p, o->out);
     std::cout << "C++ model: " << s.frames << " frames, " << s.words

@@ -28,6 +28,20 @@ cv::Mat read_grey_image(const std::filesystem::path& file) {
   return img;
 }
 
+cv::Mat read_disparity_q4(const std::filesystem::path& file) {
+  cv::Mat img;
+  try {
+    img = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception&) {
+    img.release();  // reported below with the rest
+  }
+  if (img.empty() || img.channels() != 1 || img.depth() != CV_16U)
+    throw std::runtime_error("'" + file.string() +
+                             "' is not a 16-bit one-channel image; give the Q11.4 map "
+                             "`scw disparity --out16` writes");
+  return img;
+}
+
 void write_image(const std::filesystem::path& file, const cv::Mat& image) {
   bool ok = false;
   std::string why;

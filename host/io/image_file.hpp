@@ -15,6 +15,11 @@ namespace scw::host::io {
 /// which IMREAD_GRAYSCALE would silently scale to 8 bits).
 cv::Mat read_grey_image(const std::filesystem::path& file);
 
+/// Reads a 16-bit one-channel map of Q11.4 disparities (disparity x 16, what `scw disparity
+/// --out16` writes) bit for bit, as the labelling stage receives it. Throws std::runtime_error
+/// naming the file when it cannot be read or is not 16-bit one-channel (an 8-bit picture).
+cv::Mat read_disparity_q4(const std::filesystem::path& file);
+
 /// cv::imwrite with the format from the extension; throws std::runtime_error naming the file
 /// (and OpenCV's reason, e.g. an extension it has no writer for) when it cannot be written.
 void write_image(const std::filesystem::path& file, const cv::Mat& image);

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hls/pipeline/pipeline_params.hpp"
 #include "host/io/image_file.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "host/vectors/vector_set.hpp"
@@ -19,11 +20,6 @@ namespace {
 
 using hls::disparity::DisparityConfig;
 using Frame = DisparityFrame;
-
-constexpr int kPpc = DisparityVecParams<5>::kPpc;
-constexpr int kMaxWidthPx = DisparityVecParams<5>::kMaxWidthPx;
-constexpr int kNumDisp = DisparityVecParams<5>::kNumDisp;
-constexpr int kMaxHeight = DisparityVecParams<5>::kMaxHeight;
 
 /// A fixed integer hash: reproducible texture on every platform and library version.
 std::uint8_t hash_pixel(int x, int y) {
@@ -40,19 +36,20 @@ std::uint8_t hash_pixel(int x, int y) {
 Frame synthetic() {
   constexpr int w = 64, h = 24;
   Frame f;
-  f.right = cv::Mat(h, w, CV_8UC1);
-  f.left = cv::Mat(h, w, CV_8UC1);
+  cv::Mat right(h, w, CV_8UC1), left(h, w, CV_8UC1);
   f.shift = cv::Mat(h, w, CV_8UC1);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) f.right.at<std::uint8_t>(y, x) = hash_pixel(x, y);
+    for (int x = 0; x < w; ++x) right.at<std::uint8_t>(y, x) = hash_pixel(x, y);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       int s = x < 24 ? 3 : (x < 44 ? 8 : 14);
       if (x >= 28 && x < 40 && y >= 6 && y < 18) s = 11;
       f.shift.at<std::uint8_t>(y, x) = static_cast<std::uint8_t>(s);
-      f.left.at<std::uint8_t>(y, x) =
-          x >= s ? f.right.at<std::uint8_t>(y, x - s) : hash_pixel(x + 1000, y + 1000);
+      left.at<std::uint8_t>(y, x) =
+          x >= s ? right.at<std::uint8_t>(y, x - s) : hash_pixel(x + 1000, y + 1000);
     }
+  f.left = {left};
+  f.right = {right};
   f.window = 5;
   f.mode = disparity::Mode::thesis;
   f.cfg = disparity::mode_config(f.mode, w, h, 0);
@@ -75,8 +72,8 @@ Frame tsukuba(const std::filesystem::path& dir) {
   };
   const cv::Rect roi(144, 112, 96, 48);
   Frame f;
-  f.left = read("scene1.row3.col3.ppm")(roi).clone();
-  f.right = read("scene1.row3.col4.ppm")(roi).clone();
+  f.left = {read("scene1.row3.col3.ppm")(roi).clone()};
+  f.right = {read("scene1.row3.col4.ppm")(roi).clone()};
   f.window = 9;
   f.mode = disparity::Mode::opencv;
   f.cfg = disparity::mode_config(f.mode, roi.width, roi.height, 0);
@@ -102,25 +99,35 @@ Frame tsukuba_edge(const std::filesystem::path& dir) {
 void count_known_shifts(const Frame& f, const std::vector<std::uint16_t>& ref,
                         std::uint16_t invalid, DisparitySetSummary& sum) {
   sum.known_shifts = true;
-  for (int i = 0; i < f.left.cols * f.left.rows; ++i) {
+  for (int i = 0; i < f.shift.cols * f.shift.rows; ++i) {
     if (ref[i] == invalid) continue;
     ++sum.shifts_valid;
     sum.shifts_right += ref[i] == f.shift.data[i] * 16 ? 1 : 0;
   }
 }
 
-nlohmann::json config_json(const Frame& f, int window, std::uint16_t invalid) {
+/// Frames stacked top to bottom in stream order: one image a set.
+cv::Mat stacked(const std::vector<cv::Mat>& frames) {
+  cv::Mat all;
+  cv::vconcat(frames, all);
+  return all;
+}
+
+template <typename Params>
+nlohmann::json config_json(const Frame& f, std::uint16_t invalid) {
   const DisparityConfig& cfg = f.cfg;
-  return {{"width", f.left.cols},
-          {"height", f.left.rows},
-          {"ppc", kPpc},
-          {"max_width_px", kMaxWidthPx},
-          {"max_height", kMaxHeight},
-          {"window", window},
-          {"num_disp", kNumDisp},
+  return {{"width", f.left[0].cols},
+          {"height", f.left[0].rows},
+          {"frames", f.left.size()},
+          {"build", f.build},
+          {"ppc", Params::kPpc},
+          {"max_width_px", Params::kMaxWidthPx},
+          {"max_height", Params::kMaxHeight},
+          {"window", Params::kWindow},
+          {"num_disp", Params::kNumDisp},
           {"mode", disparity::mode_name(f.mode)},
           {"dmin", cfg.dmin},
-          {"dmax", cfg.dmin + kNumDisp - 1},
+          {"dmax", cfg.dmin + Params::kNumDisp - 1},
           {"prefilter", cfg.prefilter},
           {"prefilter_cap", cfg.prefilter_cap},
           {"sad_limit", cfg.sad_limit},
@@ -132,57 +139,117 @@ nlohmann::json config_json(const Frame& f, int window, std::uint16_t invalid) {
           {"invalid_code", invalid}};
 }
 
-template <typename In, typename Out>
+template <int P, typename In, typename Out>
 void write_files(const std::filesystem::path& dir, const Frame& f, const nlohmann::json& config,
                  const std::vector<In>& l, const std::vector<In>& r, const std::vector<Out>& expect,
                  const std::vector<std::uint16_t>& ref) {
+  constexpr int kPpc = P;
   auto disp_layout = pixel_beat_layout(kPpc, 16);
   disp_layout["signed"] = true;
   disp_layout["frac_bits"] = 4;
   VectorWriter vw(dir, "disparity", config, f.description);
-  vw.add_image("left.png", "input", f.left);
-  vw.add_image("right.png", "input", f.right);
+  vw.add_image("left.png", "input", stacked(f.left));
+  vw.add_image("right.png", "input", stacked(f.right));
   vw.add_hex("left.hex", "input", sim::pack_all(l), pixel_beat_layout(kPpc, 8));
   vw.add_hex("right.hex", "input", sim::pack_all(r), pixel_beat_layout(kPpc, 8));
   vw.add_hex("expected.hex", "expected", sim::pack_all(expect), disp_layout);
-  cv::Mat out_img(f.left.rows, f.left.cols, CV_16UC1);
+  cv::Mat out_img(f.left[0].rows * static_cast<int>(f.left.size()), f.left[0].cols, CV_16UC1);
   std::memcpy(out_img.data, ref.data(), ref.size() * sizeof(std::uint16_t));
   vw.add_image("expected.png", "expected", out_img);
   vw.finish();
 }
 
-template <int N>
+/// Throws std::invalid_argument unless `f`'s frames fit Params (and its crop its dmin).
+template <typename Params>
+void check_fits(const Frame& f) {
+  const int w = f.left[0].cols, h = f.left[0].rows, n = Params::kNumDisp;
+  const std::string size = std::to_string(w) + "x" + std::to_string(h);
+  if (w > Params::kMaxWidthPx || h > Params::kMaxHeight || w % Params::kPpc != 0 ||
+      w < Params::kWindow || h < Params::kWindow)
+    throw std::invalid_argument("vectors disparity: a " + size + " frame does not fit the " +
+                                f.build + " build (up to " + std::to_string(Params::kMaxWidthPx) +
+                                "x" + std::to_string(Params::kMaxHeight) +
+                                ", at least the window, width a multiple of " +
+                                std::to_string(Params::kPpc) + "): give --roi X Y W H");
+  if (f.cfg.dmin < 0 || f.cfg.dmin + n > w)
+    throw std::invalid_argument("vectors disparity: --dmin " + std::to_string(f.cfg.dmin) +
+                                " leaves no column with all " + std::to_string(n) +
+                                " candidates in a " + std::to_string(w) + "-px frame");
+}
+
+template <typename Params>
 DisparitySetSummary run(const Frame& f, const std::filesystem::path& dir) {
-  using Params = DisparityVecParams<N>;
-  const int w = f.left.cols, h = f.left.rows;
-  if (w > kMaxWidthPx || w % kPpc != 0 || w < N || h < N || h > kMaxHeight)
-    throw std::logic_error("vectors disparity: frame does not fit the vector configuration");
+  constexpr int kPpc = Params::kPpc, N = Params::kWindow;
+  check_fits<Params>(f);
+  const int w = f.left[0].cols, h = f.left[0].rows;
   const DisparityConfig& cfg = f.cfg;
-  const auto l = sim::frame_beats<kPpc>(f.left.ptr<std::uint8_t>(), w, h);
-  const auto r = sim::frame_beats<kPpc>(f.right.ptr<std::uint8_t>(), w, h);
-  const auto ref = reference::disparity_reference(
-      f.left.ptr<std::uint8_t>(), f.right.ptr<std::uint8_t>(), w, h, N, kNumDisp, cfg);
-  const auto expect = sim::frame_beats_of<typename Params::disp_beat>(ref.data(), w, h);
+  std::vector<typename Params::pixel_beat> l, r;
+  std::vector<typename Params::disp_beat> expect;
+  std::vector<std::uint16_t> ref;
+  for (std::size_t i = 0; i < f.left.size(); ++i) {
+    const cv::Mat& lm = f.left[i];
+    const cv::Mat& rm = f.right[i];
+    if (lm.size() != f.left[0].size() || rm.size() != lm.size() || !lm.isContinuous() ||
+        !rm.isContinuous())
+      throw std::logic_error("vectors disparity: the frames are not one continuous size");
+    const auto lb = sim::frame_beats<kPpc>(lm.ptr<std::uint8_t>(), w, h);
+    const auto rb = sim::frame_beats<kPpc>(rm.ptr<std::uint8_t>(), w, h);
+    l.insert(l.end(), lb.begin(), lb.end());
+    r.insert(r.end(), rb.begin(), rb.end());
+    const auto fr = reference::disparity_reference(lm.ptr<std::uint8_t>(), rm.ptr<std::uint8_t>(),
+                                                   w, h, N, Params::kNumDisp, cfg);
+    const auto fe = sim::frame_beats_of<typename Params::disp_beat>(fr.data(), w, h);
+    ref.insert(ref.end(), fr.begin(), fr.end());
+    expect.insert(expect.end(), fe.begin(), fe.end());
+  }
   DisparitySetSummary sum;
   const auto got = disparity::run_disparity_model<Params>(l, r, cfg, &sum.cycles);
+  const std::size_t per_frame = expect.size() / f.left.size(), per_row = w / kPpc;
   for (std::size_t i = 0; i < expect.size(); ++i)
     if (got[i] != expect[i])
       throw std::runtime_error("vectors disparity: the C++ model's beat " + std::to_string(i) +
-                               " (row " + std::to_string(i / (w / kPpc)) + ") is " +
+                               " (frame " + std::to_string(i / per_frame) + ", row " +
+                               std::to_string(i % per_frame / per_row) + ") is " +
                                sim::pack(got[i]).hex() + ", the reference gives " +
                                sim::pack(expect[i]).hex());
   const std::uint16_t invalid = hls::disparity::invalid_code(cfg);
   if (!f.shift.empty()) count_known_shifts(f, ref, invalid, sum);
-  write_files(dir, f, config_json(f, N, invalid), l, r, expect, ref);
+  write_files<kPpc>(dir, f, config_json<Params>(f, invalid), l, r, expect, ref);
   sum.width = w;
   sum.height = h;
+  sum.frames = static_cast<int>(f.left.size());
+  sum.build = f.build;
   sum.ppc = kPpc;
   sum.window = N;
   sum.dmin = cfg.dmin;
-  sum.dmax = cfg.dmin + kNumDisp - 1;
+  sum.dmax = cfg.dmin + Params::kNumDisp - 1;
   sum.mode = disparity::mode_name(f.mode);
   sum.beats = got.size();
   return sum;
+}
+
+/// Runs `f` at its P on a pipeline build.
+template <template <int> class Build>
+DisparitySetSummary run_build(const Frame& f, const std::filesystem::path& dir) {
+  switch (f.ppc) {
+    case 1:
+      return run<typename Build<1>::disparity>(f, dir);
+    case 2:
+      return run<typename Build<2>::disparity>(f, dir);
+    case 4:
+      return run<typename Build<4>::disparity>(f, dir);
+    default:
+      throw std::invalid_argument("vectors disparity: P = " + std::to_string(f.ppc) +
+                                  "; the builds take 1, 2 or 4 pixels a beat");
+  }
+}
+
+/// The window a build is made with (0: the vectors build's 5 or 9).
+int build_window(const std::string& build) {
+  if (build == "small") return hls::pipeline::SmallPipeline<1>::kWindow;
+  if (build == "tsukuba") return hls::pipeline::TsukubaPipeline<1>::kWindow;
+  if (build == "thesis") return hls::pipeline::ThesisPipeline<1>::kWindow;
+  return 0;
 }
 
 }  // namespace
@@ -200,51 +267,82 @@ DisparityFrame disparity_preset(const std::string& name, const std::filesystem::
                               "' (there are: texture, tsukuba, tsukuba_edge)");
 }
 
-DisparityFrame disparity_frame(const UserPair& u) {
-  const cv::Mat l = host::io::read_grey_image(u.left), r = host::io::read_grey_image(u.right);
-  if (l.size() != r.size())
-    throw std::invalid_argument("vectors disparity: " + u.left.string() + " is " +
-                                std::to_string(l.cols) + "x" + std::to_string(l.rows) + ", " +
-                                u.right.string() + " " + std::to_string(r.cols) + "x" +
-                                std::to_string(r.rows) + ": a pair has one size");
-  const cv::Rect roi = u.roi.area() > 0 ? u.roi : cv::Rect(0, 0, l.cols, l.rows);
-  if ((roi & cv::Rect(0, 0, l.cols, l.rows)) != roi)
-    throw std::invalid_argument("vectors disparity: --roi " + std::to_string(roi.x) + " " +
-                                std::to_string(roi.y) + " " + std::to_string(roi.width) + " " +
-                                std::to_string(roi.height) + " is not inside the " +
-                                std::to_string(l.cols) + "x" + std::to_string(l.rows) + " pair");
-  if (roi.width > kMaxWidthPx || roi.height > kMaxHeight || roi.width % kPpc != 0)
-    throw std::invalid_argument(
-        "vectors disparity: a " + std::to_string(roi.width) + "x" + std::to_string(roi.height) +
-        " frame does not fit the vector build (up to " + std::to_string(kMaxWidthPx) + "x" +
-        std::to_string(kMaxHeight) + ", width a multiple of " + std::to_string(kPpc) +
-        "): give --roi X Y W H");
-  if (u.dmin < 0 || u.dmin + kNumDisp > roi.width)
-    throw std::invalid_argument("vectors disparity: --dmin " + std::to_string(u.dmin) +
-                                " leaves no column with all 16 candidates in a " +
-                                std::to_string(roi.width) + "-px frame");
+const std::vector<std::string>& disparity_builds() {
+  static const std::vector<std::string> kNames = {"vectors", "small", "tsukuba", "thesis"};
+  return kNames;
+}
+
+DisparityFrame disparity_frames(const UserPair& u) {
+  if (u.left.empty() || u.left.size() != u.right.size())
+    throw std::invalid_argument("vectors disparity: give as many --right images as --left (" +
+                                std::to_string(u.left.size()) + " and " +
+                                std::to_string(u.right.size()) + ")");
   Frame f;
-  f.left = l(roi).clone();
-  f.right = r(roi).clone();
+  cv::Rect roi;
+  cv::Size first;
+  for (std::size_t i = 0; i < u.left.size(); ++i) {
+    const cv::Mat l = host::io::read_grey_image(u.left[i]);
+    const cv::Mat r = host::io::read_grey_image(u.right[i]);
+    const auto size_of = [](const cv::Mat& m) {
+      return std::to_string(m.cols) + "x" + std::to_string(m.rows);
+    };
+    if (i == 0) first = l.size();
+    // With a crop, each pair needs only to hold it; without, the pairs are the frame.
+    if (l.size() != r.size() || (u.roi.area() == 0 && l.size() != first))
+      throw std::invalid_argument(
+          "vectors disparity: " + u.left[i].string() + " is " + size_of(l) + ", " +
+          u.right[i].string() + " " + size_of(r) +
+          (i > 0 ? ", the first pair " + size_of(cv::Mat(first, CV_8UC1)) : std::string()) +
+          ": the pairs have one size (or give --roi X Y W H)");
+    if (i == 0) roi = u.roi.area() > 0 ? u.roi : cv::Rect(0, 0, l.cols, l.rows);
+    if ((roi & cv::Rect(0, 0, l.cols, l.rows)) != roi)
+      throw std::invalid_argument("vectors disparity: --roi " + std::to_string(roi.x) + " " +
+                                  std::to_string(roi.y) + " " + std::to_string(roi.width) + " " +
+                                  std::to_string(roi.height) + " is not inside the " + size_of(l) +
+                                  " pair " + u.left[i].filename().string());
+    f.left.push_back(l(roi).clone());
+    f.right.push_back(r(roi).clone());
+  }
+  const int built = build_window(u.build);
+  if (built != 0 && u.window != built)
+    throw std::invalid_argument("vectors disparity: the " + u.build + " build matches with N = " +
+                                std::to_string(built) + "; give --window " + std::to_string(built));
   f.window = u.window;
   f.mode = u.mode;
+  f.build = u.build;
+  f.ppc = u.ppc;
   f.cfg = disparity::mode_config(f.mode, roi.width, roi.height, u.dmin);
   f.cfg.edge_candidates = u.edge_candidates;
   std::ostringstream d;
-  d << "scw disparity stage, " << disparity::mode_name(f.mode) << " mode, N = " << f.window
-    << ", d " << u.dmin << ".." << u.dmin + kNumDisp - 1 << ", edge_candidates "
-    << u.edge_candidates << ": " << u.left.filename().string() << " (left) and "
-    << u.right.filename().string() << " (right), grey by cv::imread IMREAD_GRAYSCALE, crop x "
-    << roi.x << " y " << roi.y << " " << roi.width << "x" << roi.height;
+  d << "scw disparity stage (" << u.build << " build, P = " << u.ppc << "), "
+    << disparity::mode_name(f.mode) << " mode, N = " << f.window << ", dmin " << u.dmin
+    << ", edge_candidates " << u.edge_candidates << ": " << f.left.size()
+    << " pair(s) back to back,";
+  for (std::size_t i = 0; i < u.left.size(); ++i)
+    d << " " << u.left[i].filename().string() << " / " << u.right[i].filename().string();
+  d << " (left / right), grey by cv::imread IMREAD_GRAYSCALE, crop x " << roi.x << " y " << roi.y
+    << " " << roi.width << "x" << roi.height;
   f.description = d.str();
   return f;
 }
 
 DisparitySetSummary write_disparity_set(const DisparityFrame& f, const std::filesystem::path& dir) {
-  if (f.window == 5) return run<5>(f, dir);
-  if (f.window == 9) return run<9>(f, dir);
+  if (f.left.empty() || f.left.size() != f.right.size())
+    throw std::invalid_argument("vectors disparity: no frame, or unpaired frames");
+  if (f.build == "small") return run_build<hls::pipeline::SmallPipeline>(f, dir);
+  if (f.build == "tsukuba") return run_build<hls::pipeline::TsukubaPipeline>(f, dir);
+  if (f.build == "thesis") return run_build<hls::pipeline::ThesisPipeline>(f, dir);
+  if (f.build != "vectors")
+    throw std::invalid_argument("vectors disparity: no build '" + f.build +
+                                "' (vectors, small, tsukuba, thesis)");
+  if (f.ppc != DisparityVecParams<5>::kPpc)
+    throw std::invalid_argument(
+        "vectors disparity: the vectors build is P = 2; give --ppc 2 or "
+        "another --config");
+  if (f.window == 5) return run<DisparityVecParams<5>>(f, dir);
+  if (f.window == 9) return run<DisparityVecParams<9>>(f, dir);
   throw std::invalid_argument("vectors disparity: window " + std::to_string(f.window) +
-                              "; the sets are built for N = 5 or 9");
+                              "; the vectors build is made for N = 5 or 9");
 }
 
 }  // namespace scw::vectors

@@ -20,14 +20,21 @@ namespace scw::vectors {
 template <int N>
 using DisparityVecParams = hls::disparity::DisparityParams<2, 128, N, 16, 64>;
 
-/// One pair to match and the configuration.
+/// The builds a set is made at: "vectors" (DisparityVecParams: P = 2, up to 128 x 64, N 5 or
+/// 9, 16 candidates; the committed sets) and the pipeline's "small", "tsukuba" and "thesis"
+/// (hls/pipeline/pipeline_configs.def: their size, window and candidates, at P = 1, 2 or 4).
+const std::vector<std::string>& disparity_builds();
+
+/// Pairs to match, sent back to back, and the configuration.
 struct DisparityFrame {
-  cv::Mat left, right;  // 8UC1, same size
-  int window = 5;       // N: 5 or 9, the two windows the sets are built for
+  std::vector<cv::Mat> left, right;  // 8UC1, one size, a pair a frame
+  int window = 5;                    // N: the vectors build takes 5 or 9, the others their own
   disparity::Mode mode = disparity::Mode::thesis;
   hls::disparity::DisparityConfig cfg;
   std::string description;
   cv::Mat shift;  // synthetic: the true disparity of every left pixel (8UC1), else empty
+  std::string build = "vectors";
+  int ppc = 2;  // the vectors build: 2
 };
 
 /// The presets `scw vectors disparity` writes: "texture" and "tsukuba".
@@ -38,25 +45,28 @@ const std::vector<std::string>& disparity_presets();
 ///     (throws std::runtime_error when a file is missing).
 DisparityFrame disparity_preset(const std::string& name, const std::filesystem::path& data_dir);
 
-/// A pair of the user's: two image files (read as grey), the crop of them to match (empty: the
-/// whole image) and the stage's settings.
+/// Pairs of the user's, a frame each: image files (read as grey, all one size), the crop of
+/// them to match (empty: the whole image), the build and the stage's settings.
 struct UserPair {
-  std::filesystem::path left, right;
+  std::vector<std::filesystem::path> left, right;
   cv::Rect roi;
-  int window = 9;  // 5 or 9
+  int window = 9;  // the vectors build: 5 or 9; the others: their own
   disparity::Mode mode = disparity::Mode::opencv;
   int dmin = 0;
   int edge_candidates = 0;
+  std::string build = "vectors";
+  int ppc = 2;
 };
 
-/// The frame of a user's pair. Throws std::invalid_argument naming what does not fit (sizes, the
-/// crop, the vector build's 128 x 64 frame, the range) and std::runtime_error for a file that is
-/// not an image.
-DisparityFrame disparity_frame(const UserPair& pair);
+/// The frames of a user's pairs. Throws std::invalid_argument naming what does not fit (sizes,
+/// the crop, the build's frame, window and range) and std::runtime_error for a file that is not
+/// an image.
+DisparityFrame disparity_frames(const UserPair& pair);
 
 /// What write_disparity_set() checked and wrote, for the CLI to print.
 struct DisparitySetSummary {
-  int width = 0, height = 0, ppc = 0, window = 0, dmin = 0, dmax = 0;
+  int width = 0, height = 0, ppc = 0, window = 0, dmin = 0, dmax = 0, frames = 0;
+  std::string build;
   std::string mode;           // disparity::mode_name
   std::size_t beats = 0;      // output beats, each equal to the direct reference
   std::int64_t cycles = 0;    // the C++ model's run
@@ -64,10 +74,10 @@ struct DisparitySetSummary {
   long shifts_right = 0, shifts_valid = 0;  // computed pixels that find their true disparity
 };
 
-/// Runs `f` through the C++ model, checks every beat against the direct reference, then writes
-/// the set into `dir`: left.png, right.png, left.hex, right.hex, expected.hex, expected.png and
-/// the manifest. Throws std::runtime_error or std::logic_error (before writing anything) when a
-/// check fails.
+/// Runs `f`'s frames back to back through the C++ model of its build, checks every beat against
+/// the direct reference, then writes the set into `dir`: left.png, right.png (the frames stacked
+/// top to bottom), left.hex, right.hex, expected.hex, expected.png and the manifest. Throws
+/// std::runtime_error or std::logic_error (before writing anything) when a check fails.
 DisparitySetSummary write_disparity_set(const DisparityFrame& f, const std::filesystem::path& dir);
 
 }  // namespace scw::vectors

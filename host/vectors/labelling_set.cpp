@@ -12,6 +12,8 @@
 #include <stdexcept>
 
 #include "hls/labelling/labelling.hpp"
+#include "hls/pipeline/pipeline_params.hpp"
+#include "host/io/image_file.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/labelling/second_pass.hpp"
 #include "host/labelling/segment_files.hpp"
@@ -34,8 +36,6 @@ using hls::labelling::LabelPacket;
 using hls::labelling::Object;
 
 using VecParams = LabellingVecParams;
-using InBeat = VecParams::in_beat;
-using Model = sim::LabellingModel<VecParams>;
 using Layout = sim::BeatLayout<LabelPacket>;
 using Expect = LabellingExpect;
 using Frame = LabellingFrame;
@@ -203,23 +203,27 @@ struct FrameOut {
 
 /// The model's second pass on the frame it has just emitted, on the vector build itself, so that
 /// in an overflow frame the image shows exactly the objects the stage reported.
-void second_pass(const Model::kernel_type& k, const std::vector<std::int32_t>& node_map,
-                 FrameOut& f) {
-  auto n = labelling::number_objects(f.objects, node_map, kW, kH,
+template <typename Kernel>
+void second_pass(const Kernel& k, const std::vector<std::int32_t>& node_map,
+                 const LabellingConfig& cfg, FrameOut& f) {
+  auto n = labelling::number_objects(f.objects, node_map, cfg.width, cfg.height,
                                      [&k](int node) { return k.root(node); });
   f.labels = n.labels;
   f.label_of = std::move(n.label_of);
 }
 
 /// Every frame back to back through one stage, no stalls, from reset.
-std::vector<FrameOut> run_model(const Preset& p, const std::vector<InBeat>& beats,
+template <typename Params>
+std::vector<FrameOut> run_model(const Preset& p, const std::vector<typename Params::in_beat>& beats,
                                 std::vector<LabelPacket>& words, std::int64_t& cycles) {
-  const auto model = std::make_unique<Model>(p.cfg);  // descriptor RAMs: off the stack
-  std::vector<std::int32_t> node_map(static_cast<std::size_t>(kW) * kH, 0);
+  using InBeat = typename Params::in_beat;
+  // descriptor RAMs: off the stack
+  const auto model = std::make_unique<sim::LabellingModel<Params>>(p.cfg);
+  std::vector<std::int32_t> node_map(static_cast<std::size_t>(p.cfg.width) * p.cfg.height, 0);
   model->kernel().set_node_map(&node_map);
   std::vector<FrameOut> frames(1);
   std::size_t next = 0;
-  const std::int64_t limit = 64 * static_cast<std::int64_t>(beats.size()) + 64 * VecParams::kNodes;
+  const std::int64_t limit = 64 * static_cast<std::int64_t>(beats.size()) + 64 * Params::kNodes;
   for (cycles = 0; frames.size() <= p.frames.size(); ++cycles) {
     if (cycles > limit) throw std::logic_error("vectors labelling: the model did not finish");
     const bool valid = next < beats.size();
@@ -234,7 +238,7 @@ std::vector<FrameOut> run_model(const Preset& p, const std::vector<InBeat>& beat
       } else {
         // The node map and the roots stay this frame's until the next frame's Resolve.
         f.status = o.out.data.status;
-        second_pass(model->kernel(), node_map, f);
+        second_pass(model->kernel(), node_map, p.cfg, f);
         frames.emplace_back();
       }
     }
@@ -252,9 +256,11 @@ std::string status_text(const FrameStatus& s) {
 }
 
 /// Throws unless the model's frame is what the reference says it must be.
+template <typename Params>
 void check_frame(const Preset& p, const Frame& in, const FrameOut& got) {
   const std::string at = "vectors labelling: frame '" + in.name + "': ";
-  const auto ref = reference::labelling_reference(in.d.ptr<std::uint16_t>(), kW, kH, p.cfg);
+  const auto ref =
+      reference::labelling_reference(in.d.ptr<std::uint16_t>(), in.d.cols, in.d.rows, p.cfg);
   if (got.status.objects != got.objects.size() || got.status.stream_error)
     throw std::runtime_error(at + "status " + status_text(got.status) + " for " +
                              std::to_string(got.objects.size()) + " objects emitted");
@@ -265,9 +271,13 @@ void check_frame(const Preset& p, const Frame& in, const FrameOut& got) {
     case Expect::kClean: {
       if (got.status.tile_overflow || got.status.object_overflow ||
           got.objects.size() != ref.objects.size())
-        throw std::runtime_error(at + "the model gives " + status_text(got.status) +
-                                 ", the reference finds " + std::to_string(ref.objects.size()) +
-                                 " objects and no overflow");
+        throw std::runtime_error(
+            at + "the model gives " + status_text(got.status) + ", the reference finds " +
+            std::to_string(ref.objects.size()) +
+            " objects and no overflow; a frame must fit the build's tables (" +
+            std::to_string(Params::kLabelsPerTile) + " labels a tile, " +
+            std::to_string(Params::kMaxObjects) +
+            " objects): raise --floor, use more --tiles, or filter the map's speckle");
       const auto sorted = labelling::raster_sorted(got.objects);
       for (std::size_t i = 0; i < sorted.size(); ++i)
         if (sorted[i] != ref.objects[i])
@@ -291,9 +301,9 @@ void check_frame(const Preset& p, const Frame& in, const FrameOut& got) {
         throw std::runtime_error(at + "expected " +
                                  (tile ? "tile_overflow alone" : "object_overflow alone") +
                                  ", the model gives " + status_text(got.status));
-      if (!tile && got.objects.size() != static_cast<std::size_t>(kMaxObjects))
+      if (!tile && got.objects.size() != static_cast<std::size_t>(Params::kMaxObjects))
         throw std::runtime_error(at + "an object overflow must report " +
-                                 std::to_string(kMaxObjects) + " objects");
+                                 std::to_string(Params::kMaxObjects) + " objects");
       // The objects never join, so every one reported is whole: one of the reference's.
       for (const Object& o : got.objects)
         if (!in_ref(o))
@@ -314,12 +324,15 @@ cv::Mat stacked(const std::vector<cv::Mat>& frames) {
 }
 
 /// Every frame's beats back to back; `images` gets the frames for in.png.
+template <typename InBeat>
 std::vector<InBeat> stream_beats(const Preset& p, std::vector<cv::Mat>& images) {
   std::vector<InBeat> beats;
+  const int w = p.cfg.width, h = p.cfg.height;
   for (const Frame& f : p.frames) {
-    if (f.d.type() != CV_16UC1 || f.d.cols != kW || f.d.rows != kH || !f.d.isContinuous())
-      throw std::logic_error("vectors labelling: a frame is not 64x48 16-bit");
-    const auto b = sim::frame_beats_of<InBeat>(f.d.ptr<std::uint16_t>(), kW, kH);
+    if (f.d.type() != CV_16UC1 || f.d.cols != w || f.d.rows != h || !f.d.isContinuous())
+      throw std::logic_error("vectors labelling: a frame is not the configured " +
+                             std::to_string(w) + "x" + std::to_string(h) + " 16-bit");
+    const auto b = sim::frame_beats_of<InBeat>(f.d.ptr<std::uint16_t>(), w, h);
     beats.insert(beats.end(), b.begin(), b.end());
     images.push_back(f.d);
   }
@@ -327,14 +340,16 @@ std::vector<InBeat> stream_beats(const Preset& p, std::vector<cv::Mat>& images) 
 }
 
 /// The model's frames, each checked against the reference, and its words the same under stalls.
-std::vector<FrameOut> checked_frames(const Preset& p, const std::vector<InBeat>& beats,
+template <typename Params>
+std::vector<FrameOut> checked_frames(const Preset& p,
+                                     const std::vector<typename Params::in_beat>& beats,
                                      std::vector<LabelPacket>& words, std::int64_t& cycles) {
-  const auto frames = run_model(p, beats, words, cycles);
+  const auto frames = run_model<Params>(p, beats, words, cycles);
   if (frames.size() != p.frames.size())
     throw std::logic_error("vectors labelling: the model closed another number of frames");
-  for (std::size_t i = 0; i < frames.size(); ++i) check_frame(p, p.frames[i], frames[i]);
+  for (std::size_t i = 0; i < frames.size(); ++i) check_frame<Params>(p, p.frames[i], frames[i]);
   // A replay stalls both sides; the words it must see cannot depend on that.
-  const auto m = std::make_unique<Model>(p.cfg);
+  const auto m = std::make_unique<sim::LabellingModel<Params>>(p.cfg);
   const auto r = sim::run_stream(*m, beats, sim::StallPattern{sim::StallKind::kBoth, 0},
                                  words.size(), 4'000'000);
   if (r.timed_out || !r.violations.empty() || r.out != words)
@@ -342,15 +357,17 @@ std::vector<FrameOut> checked_frames(const Preset& p, const std::vector<InBeat>&
   return frames;
 }
 
+template <typename Params>
 nlohmann::json config_json(const Preset& p, std::size_t frames, std::size_t beats,
                            std::size_t words) {
   const LabellingConfig& c = p.cfg;
-  return {{"max_width_px", VecParams::kMaxWidthPx},
-          {"max_height", VecParams::kMaxHeight},
-          {"max_tiles_x", VecParams::kMaxTilesX},
-          {"max_tiles_y", VecParams::kMaxTilesY},
-          {"labels_per_tile", VecParams::kLabelsPerTile},
-          {"max_objects", VecParams::kMaxObjects},
+  return {{"build", p.build},
+          {"max_width_px", Params::kMaxWidthPx},
+          {"max_height", Params::kMaxHeight},
+          {"max_tiles_x", Params::kMaxTilesX},
+          {"max_tiles_y", Params::kMaxTilesY},
+          {"labels_per_tile", Params::kLabelsPerTile},
+          {"max_objects", Params::kMaxObjects},
           {"width", c.width},
           {"height", c.height},
           {"tile_w", c.tile_w},
@@ -384,6 +401,7 @@ std::vector<std::string> status_row(std::size_t frame, std::size_t line, const F
   return r;
 }
 
+template <typename InBeat>
 void write_files(const std::filesystem::path& dir, const Preset& p, const nlohmann::json& config,
                  const std::vector<InBeat>& beats, const std::vector<LabelPacket>& words,
                  const std::vector<cv::Mat>& images, const std::vector<cv::Mat>& label_images,
@@ -419,41 +437,52 @@ LabellingPreset labelling_preset(const std::string& name, const std::filesystem:
                               "' (there are: shapes, tsukuba, overflow)");
 }
 
-LabellingPreset labelling_frame(const UserMap& u) {
-  const cv::Mat m = cv::imread(u.disparity.string(), cv::IMREAD_UNCHANGED);
-  if (m.empty() || m.type() != CV_16UC1)
-    throw std::runtime_error("vectors labelling: '" + u.disparity.string() +
-                             "' is not a 16-bit one-channel image; give the Q11.4 map "
-                             "`scw disparity --out16` writes");
-  const cv::Rect roi = u.roi.area() > 0 ? u.roi : cv::Rect(0, 0, m.cols, m.rows);
-  if ((roi & cv::Rect(0, 0, m.cols, m.rows)) != roi || roi.width > kW || roi.height > kH)
-    throw std::invalid_argument("vectors labelling: the crop x " + std::to_string(roi.x) + " y " +
-                                std::to_string(roi.y) + " " + std::to_string(roi.width) + "x" +
-                                std::to_string(roi.height) + " of the " + std::to_string(m.cols) +
-                                "x" + std::to_string(m.rows) + " map must lie inside it and fit " +
-                                "the vector build (up to " + std::to_string(kW) + "x" +
-                                std::to_string(kH) + "): give --roi X Y W H");
+LabellingPreset labelling_frames(const UserMap& u) {
+  if (u.disparity.empty()) throw std::invalid_argument("vectors labelling: give a map");
   Preset p;
+  cv::Rect roi;
+  for (const auto& path : u.disparity) {
+    const cv::Mat m = host::io::read_disparity_q4(path);
+    if (roi.area() == 0) roi = u.roi.area() > 0 ? u.roi : cv::Rect(0, 0, m.cols, m.rows);
+    if ((roi & cv::Rect(0, 0, m.cols, m.rows)) != roi)
+      throw std::invalid_argument("vectors labelling: the crop x " + std::to_string(roi.x) + " y " +
+                                  std::to_string(roi.y) + " " + std::to_string(roi.width) + "x" +
+                                  std::to_string(roi.height) + " must lie inside the " +
+                                  std::to_string(m.cols) + "x" + std::to_string(m.rows) + " map " +
+                                  path.filename().string() + ": give --roi X Y W H");
+    p.frames.push_back({path.filename().string(), m(roi).clone(), Expect::kClean});
+  }
   p.tiles_x = u.tiles_x;
   p.tiles_y = u.tiles_y;
+  p.build = u.build;
   p.cfg = labelling::grid_config(roi.width, roi.height, u.tiles_x, u.tiles_y, u.floor, u.min_area);
-  p.frames = {{"user", m(roi).clone(), Expect::kClean}};
   std::ostringstream s;
-  s << "scw labelling stage: a " << roi.width << "x" << roi.height << " crop (x " << roi.x << " y "
-    << roi.y << ") of " << u.disparity.filename().string() << " (Q11.4), " << u.tiles_x << "x"
-    << u.tiles_y << " tiles, floor " << u.floor << ", min area " << u.min_area;
+  s << "scw labelling stage (" << u.build << " build): " << p.frames.size()
+    << " frame(s) back to back, the " << roi.width << "x" << roi.height << " crop (x " << roi.x
+    << " y " << roi.y << ") of";
+  for (const auto& path : u.disparity) s << " " << path.filename().string();
+  s << " (Q11.4), " << u.tiles_x << "x" << u.tiles_y << " tiles, floor " << u.floor << ", min area "
+    << u.min_area;
   p.description = s.str();
   return p;
 }
 
-LabellingSetSummary write_labelling_set(const LabellingPreset& p,
-                                        const std::filesystem::path& dir) {
-  hls::labelling::check_config<VecParams>(p.cfg);
+namespace {
+
+template <typename Params>
+LabellingSetSummary write_set(const LabellingPreset& p, const std::filesystem::path& dir) {
+  using InBeat = typename Params::in_beat;
+  if (p.cfg.width > Params::kMaxWidthPx || p.cfg.height > Params::kMaxHeight)
+    throw std::invalid_argument("vectors labelling: a " + std::to_string(p.cfg.width) + "x" +
+                                std::to_string(p.cfg.height) + " frame does not fit the " +
+                                p.build + " build (up to " + std::to_string(Params::kMaxWidthPx) +
+                                "x" + std::to_string(Params::kMaxHeight) + "): give --roi X Y W H");
+  hls::labelling::check_config<Params>(p.cfg);
   std::vector<cv::Mat> images;
-  const std::vector<InBeat> beats = stream_beats(p, images);
+  const std::vector<InBeat> beats = stream_beats<InBeat>(p, images);
   std::vector<LabelPacket> words;
   LabellingSetSummary sum;
-  const auto frames = checked_frames(p, beats, words, sum.cycles);
+  const auto frames = checked_frames<Params>(p, beats, words, sum.cycles);
   // One row per object word, in stream order; `word` is its line in expected.hex (from 0),
   // `label` its number in labels.png.
   Rows obj_rows, status_rows;
@@ -467,16 +496,34 @@ LabellingSetSummary write_labelling_set(const LabellingPreset& p,
     ++line;
     label_images.push_back(f.labels);
   }
-  write_files(dir, p, config_json(p, frames.size(), beats.size(), words.size()), beats, words,
-              images, label_images, obj_rows, status_rows);
+  write_files(dir, p, config_json<Params>(p, frames.size(), beats.size(), words.size()), beats,
+              words, images, label_images, obj_rows, status_rows);
   sum.frames = frames.size();
   sum.words = words.size();
   sum.objects = obj_rows.size();
-  sum.width = kW;
-  sum.height = kH;
+  sum.width = p.cfg.width;
+  sum.height = p.cfg.height;
   sum.tiles_x = p.tiles_x;
   sum.tiles_y = p.tiles_y;
   return sum;
+}
+
+}  // namespace
+
+const std::vector<std::string>& labelling_builds() {
+  static const std::vector<std::string> kNames = {"vectors", "small", "tsukuba", "thesis"};
+  return kNames;
+}
+
+LabellingSetSummary write_labelling_set(const LabellingPreset& p,
+                                        const std::filesystem::path& dir) {
+  // The pipeline builds' stage at P = 1: one disparity a beat, as the replay testbench sends.
+  if (p.build == "vectors") return write_set<VecParams>(p, dir);
+  if (p.build == "small") return write_set<hls::pipeline::SmallPipeline<1>::labelling>(p, dir);
+  if (p.build == "tsukuba") return write_set<hls::pipeline::TsukubaPipeline<1>::labelling>(p, dir);
+  if (p.build == "thesis") return write_set<hls::pipeline::ThesisPipeline<1>::labelling>(p, dir);
+  throw std::invalid_argument("vectors labelling: no build '" + p.build +
+                              "' (vectors, small, tsukuba, thesis)");
 }
 
 nlohmann::json labelling_word_layout() {

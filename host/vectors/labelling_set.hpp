@@ -29,7 +29,7 @@ enum class LabellingExpect {
 
 struct LabellingFrame {
   std::string name;
-  cv::Mat d;  // CV_16UC1, 64 x 48 (the build's largest), Q11.4
+  cv::Mat d;  // CV_16UC1, the config's width x height (the presets: 64 x 48), Q11.4
   LabellingExpect expect = LabellingExpect::kClean;
 };
 
@@ -39,7 +39,13 @@ struct LabellingPreset {
   hls::labelling::LabellingConfig cfg;
   int tiles_x = 1, tiles_y = 1;
   std::string description;
+  std::string build = "vectors";  // labelling_builds()
 };
+
+/// The builds a set is made at: "vectors" (LabellingVecParams; the committed sets) and the
+/// pipeline's "small", "tsukuba" and "thesis" (hls/pipeline/pipeline_configs.def), each at one
+/// disparity a beat.
+const std::vector<std::string>& labelling_builds();
 
 /// The presets `scw vectors labelling` writes: "shapes", "tsukuba" and "overflow".
 const std::vector<std::string>& labelling_presets();
@@ -50,19 +56,21 @@ const std::vector<std::string>& labelling_presets();
 ///   overflow: a tile overflow and an object overflow, then a normal frame.
 LabellingPreset labelling_preset(const std::string& name, const std::filesystem::path& data_dir);
 
-/// A disparity map of the user's: a 16-bit PNG of Q11.4 values (as `scw disparity --out16`
-/// writes), the crop of it (empty: all of it) and the stage's settings.
+/// Disparity maps of the user's, one a frame, sent back to back: 16-bit PNGs of Q11.4 values (as
+/// `scw disparity --out16` writes), the one crop of them all (empty: the first map's whole size)
+/// and the stage's settings.
 struct UserMap {
-  std::filesystem::path disparity;
+  std::vector<std::filesystem::path> disparity;
   cv::Rect roi;
   int tiles_x = 2, tiles_y = 2;
   int floor = 0, min_area = 4;
+  std::string build = "vectors";
 };
 
-/// One frame from a user's map; every object must come out (a frame that overflows the build's
+/// The frames of a user's maps; every object must come out (a frame that overflows the build's
 /// tables fails the check). Throws std::invalid_argument naming what does not fit and
 /// std::runtime_error for a file that is not a 16-bit map.
-LabellingPreset labelling_frame(const UserMap& map);
+LabellingPreset labelling_frames(const UserMap& map);
 
 /// What write_labelling_set() checked and wrote, for the CLI to print.
 struct LabellingSetSummary {

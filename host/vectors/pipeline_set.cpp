@@ -4,10 +4,14 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
+#include "host/rectify/calibration.hpp"
+#include "host/rectify/fixed_map.hpp"
+#include "host/rectify/map_grid.hpp"
 #include "host/synth/top_params.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
@@ -110,6 +114,36 @@ std::vector<Bits> knot_words(const sim::PipelineSetup& s) {
   return v;
 }
 
+/// Both cameras' knots and the rectifiers' lead: the calibration's grid maps (the lead planned
+/// from the expanded maps, as `scw run --engine rtl` does), or the identity map.
+/// With a calibration, the warning's rig becomes its rectified cameras' (f, baseline, principal
+/// point; metres as the calibration's units).
+template <typename Build>
+std::tuple<std::vector<hls::rectify::KnotPoint>, std::vector<hls::rectify::KnotPoint>, int>
+knots_of(const std::filesystem::path& calib_file, int w, int h, host::warning::WarningSetup& rig) {
+  if (calib_file.empty()) {
+    const auto k = host::pipeline::identity_knots(w, h, Build::kGridLog2);
+    return {k, k, 2};
+  }
+  const auto calib = rectify::load_stereo_calibration(calib_file.string(), cv::Size(w, h));
+  if (calib.image_size != cv::Size(w, h))
+    throw std::invalid_argument(
+        "pipeline set: " + calib_file.string() + " calibrates " +
+        std::to_string(calib.image_size.width) + "x" + std::to_string(calib.image_size.height) +
+        " images, the frames are " + std::to_string(w) + "x" + std::to_string(h));
+  const auto rect = rectify::rectify_calibration(calib);
+  rig.focal_px = rect.focal_px();
+  rig.baseline_m = rect.baseline();
+  rig.cu_px = rect.principal_point().x;
+  rig.cv_px = rect.principal_point().y;
+  const auto k = rectify::grid_knots(calib, rect, Build::kGridLog2);
+  const int lead = rectify::plan_for_stage({rectify::row_window(rectify::expand(k.left)),
+                                            rectify::row_window(rectify::expand(k.right))},
+                                           Build::kRectRows, "the calibration's grid maps")
+                       .lead_rows;
+  return {k.left.knots, k.right.knots, lead};
+}
+
 template <typename T>
 void require_equal(const std::vector<T>& rtl, const std::vector<T>& cpp, const char* what) {
   const auto a = sim::pack_all(rtl), b = sim::pack_all(cpp);
@@ -123,15 +157,37 @@ void require_equal(const std::vector<T>& rtl, const std::vector<T>& cpp, const c
                                " differs from the C++ chain's at word " + std::to_string(i));
 }
 
-template <int P>
-PipelineSetSummary write_small(const PipelineSetOptions& o, const std::filesystem::path& dir,
-                               const std::function<void(const std::string&)>& say) {
-  using Build = sim::small_build::Build<P>;
-  const int w = o.left.front().cols, h = o.left.front().rows;
+/// The stage settings of a build's sets: the small build's tests' own, or for the larger builds
+/// `scw sim`'s (every candidate from 0, the build's tiles, objects of w h / 2000 px).
+template <typename Build>
+host::pipeline::StageOptions stage_options(int w, int h) {
   auto stage = host::pipeline::small_build_options();
+  if constexpr (Build::kMaxWidthPx > sim::small_build::Build<1>::kMaxWidthPx) {
+    stage.num_disp = Build::kNumDisp;
+    stage.tiles_x = Build::kMaxTilesX;
+    stage.tiles_y = Build::kMaxTilesY;
+    stage.min_area = std::max(20, w * h / 2000);
+    stage.warning = {};
+  }
   if (w * h <= 64 * 48) stage.road_min_count = 50;  // as `scw soak`: a small frame's road
-  const auto knots = host::pipeline::identity_knots(w, h, Build::kGridLog2);
-  const auto setup = host::pipeline::make_setup(w, h, Build::kGridLog2, stage, knots, knots, 2);
+  return stage;
+}
+
+/// The set at a build: the C++ chain always, the Verilated top (`Top`, void: none) when asked.
+template <typename Build, typename Top>
+PipelineSetSummary write_build(const PipelineSetOptions& o, const std::filesystem::path& dir,
+                               const std::function<void(const std::string&)>& say) {
+  constexpr int P = Build::kPpc;
+  const int w = o.left.front().cols, h = o.left.front().rows;
+  if (w > Build::kMaxWidthPx || h > Build::kMaxHeight || w % P != 0)
+    throw std::invalid_argument("pipeline set: " + std::to_string(w) + "x" + std::to_string(h) +
+                                " frames do not fit the " + o.config + " build (up to " +
+                                std::to_string(Build::kMaxWidthPx) + "x" +
+                                std::to_string(Build::kMaxHeight) + ")");
+  auto stage = stage_options<Build>(w, h);
+  const auto [left_knots, right_knots, lead] = knots_of<Build>(o.calib, w, h, stage.warning);
+  const auto setup =
+      host::pipeline::make_setup(w, h, Build::kGridLog2, stage, left_knots, right_knots, lead);
   const auto left = host::pipeline::frames_beats<P>(o.left);
   const auto right = host::pipeline::frames_beats<P>(o.right);
   const auto frames = static_cast<std::size_t>(o.frames);
@@ -148,13 +204,18 @@ PipelineSetSummary write_small(const PipelineSetOptions& o, const std::filesyste
         " cycles");
   PipelineSetSummary sum{o.frames,       w,    h, P, left.size(), chain.object_table().size(),
                          chain.cycles(), false};
-  if (o.rtl) {
-    typename sim::small_build::Top<P> top(setup);
-    const auto r = top.run(left, right, frames, bound);
-    require_equal(r.results, chain.results(), "frame results");
-    require_equal(r.object_table, chain.object_table(), "object table");
-    sum.rtl = true;
-    if (say) say("Verilated scw_pipeline: results and object table equal the C++ chain's");
+  if constexpr (!std::is_void_v<Top>) {
+    if (o.rtl) {
+      Top top(setup);
+      const auto r = top.run(left, right, frames, bound);
+      require_equal(r.results, chain.results(), "frame results");
+      require_equal(r.object_table, chain.object_table(), "object table");
+      sum.rtl = true;
+      if (say) say("Verilated scw_pipeline: results and object table equal the C++ chain's");
+    }
+  } else if (o.rtl) {
+    throw std::invalid_argument("pipeline set: the " + o.config +
+                                " build's top is not Verilated in the CLI; give --engine cpp");
   }
 
   json params = json::object();
@@ -163,10 +224,15 @@ PipelineSetSummary write_small(const PipelineSetOptions& o, const std::filesyste
   json config = {{"config", o.config}, {"ppc", P},           {"width", w},
                  {"height", h},        {"frames", o.frames}, {"cfg_words", cfg.size()},
                  {"params", params}};
-  VectorWriter out(dir, "pipeline", config,
-                   "scw_pipeline (" + o.config + " build, P = " + std::to_string(P) +
-                       "): " + std::to_string(o.frames) + " frames of " + std::to_string(w) + "x" +
-                       std::to_string(h) + " back to back; every stream between the stages");
+  VectorWriter out(
+      dir, "pipeline", config,
+      "scw_pipeline (" + o.config + " build, P = " + std::to_string(P) +
+          "): " + std::to_string(o.frames) + " frames of " + std::to_string(w) + "x" +
+          std::to_string(h) + " back to back, " +
+          (o.calib.empty() ? std::string("rectified (identity map)")
+                           : "raw, rectified with " + o.calib.filename().string() +
+                                 "'s grid maps (lead " + std::to_string(lead) + " rows)") +
+          "; every stream between the stages");
   std::vector<Bits> cfg_bits;
   json lines = json::array();
   for (const auto& [port, value] : cfg) {
@@ -213,7 +279,7 @@ PipelineSetSummary write_small(const PipelineSetOptions& o, const std::filesyste
 }  // namespace
 
 const std::vector<std::string>& pipeline_set_configs() {
-  static const std::vector<std::string> v = {"small"};
+  static const std::vector<std::string> v = {"small", "thesis"};
   return v;
 }
 
@@ -224,7 +290,7 @@ PipelineSetSummary write_pipeline_set(const PipelineSetOptions& opt,
   if (std::find(pipeline_set_configs().begin(), pipeline_set_configs().end(), o.config) ==
       pipeline_set_configs().end())
     throw std::invalid_argument("pipeline set: no build '" + o.config +
-                                "' with a Verilated top here; builds: small");
+                                "'; builds: small (its top Verilated here), thesis (C++ chain)");
   if (o.frames < 1) throw std::invalid_argument("pipeline set: --frames must be at least 1");
   if (o.left.size() != o.right.size())
     throw std::invalid_argument("pipeline set: " + std::to_string(o.left.size()) + " left and " +
@@ -239,9 +305,16 @@ PipelineSetSummary write_pipeline_set(const PipelineSetOptions& opt,
         throw std::invalid_argument("pipeline set: frame " + std::to_string(i) +
                                     ": every frame must be 8-bit grey and of one size");
   }
-  if (o.ppc == 1) return write_small<1>(o, dir, progress);
-  if (o.ppc == 2) return write_small<2>(o, dir, progress);
-  throw std::invalid_argument("pipeline set: --ppc is 1 or 2 (the small build's Verilated tops)");
+  namespace small = sim::small_build;
+  using hls::pipeline::ThesisPipeline;
+  if (o.config == "thesis") {
+    if (o.ppc == 1) return write_build<ThesisPipeline<1>, void>(o, dir, progress);
+    if (o.ppc == 2) return write_build<ThesisPipeline<2>, void>(o, dir, progress);
+  } else {
+    if (o.ppc == 1) return write_build<small::Build<1>, small::Top<1>>(o, dir, progress);
+    if (o.ppc == 2) return write_build<small::Build<2>, small::Top<2>>(o, dir, progress);
+  }
+  throw std::invalid_argument("pipeline set: --ppc is 1 or 2");
 }
 
 }  // namespace scw::vectors

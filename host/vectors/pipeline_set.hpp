@@ -21,9 +21,13 @@ struct PipelineSetOptions {
   int frames = 3;
   int width = 64, height = 32;  // synthetic frames' size (a pair's own size otherwise)
   std::uint32_t seed = 1;       // synthetic frames: boxes and textures
-  /// Rectified pairs of the user's (8-bit grey, one size); empty: synthetic street frames. The
-  /// pipeline's map is then the identity.
+  /// Pairs of the user's (8-bit grey, one size), rectified unless `calib` is given; empty:
+  /// synthetic street frames.
   std::vector<cv::Mat> left, right;
+  /// A calibration (OpenCV FileStorage M1 D1 M2 D2 R T, as `scw run --calib` reads it) of the
+  /// frames' size: the frames are raw and the rectifiers run its grid maps (the knots in
+  /// knots.hex). Empty: the identity map.
+  std::filesystem::path calib;
   bool rtl = true;  // also run the Verilated top and require its outputs to equal the C++ chain's
 };
 

@@ -30,7 +30,7 @@ add_test(NAME "vectors:scw vectors disparity refuses a pair larger than the buil
                  --right "${_tsukuba}/scene1.row3.col4.ppm" --out user_too_large
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("vectors:scw vectors disparity refuses a pair larger than the build, naming --roi"
-                     PROPERTIES PASS_REGULAR_EXPRESSION "does not fit the vector build .*give --roi X Y W H")
+                     PROPERTIES PASS_REGULAR_EXPRESSION "does not fit the vectors build .*give --roi X Y W H")
 
 # A set too large to commit, made on demand at the thesis build: a 640 x 240 band of the bundled
 # chessboard pair rectified with its calibration (153,600 beats, about 2.9 MB), verified against
@@ -107,3 +107,82 @@ add_test(NAME "vectors:scw vectors warning refuses a value wider than its field,
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("vectors:scw vectors warning refuses a value wider than its field, naming line and column"
                      PROPERTIES PASS_REGULAR_EXPRESSION "wide.csv:2: area '99999999999' does not fit the field's 32 bits")
+
+# Several frames back to back at a pipeline build: two pairs (the Tsukuba pair and the raw
+# chessboard pair, each cropped at 128 96) through the small build's stage at P = 1 (N 9,
+# 128 x 96), verified, then replayed in both simulators.
+add_test(NAME "vectors:scw vectors disparity makes a two-frame set at the small build"
+         COMMAND bash -c "rm -rf user_disparity_small && '$<TARGET_FILE:scw>' vectors disparity \
+                          --config small --ppc 1 \
+                          --left '${_tsukuba}/scene1.row3.col3.ppm' '${_chess}/left01.jpg' \
+                          --right '${_tsukuba}/scene1.row3.col4.ppm' '${_chess}/right01.jpg' \
+                          --roi 128 96 128 96 --out user_disparity_small && \
+                          '$<TARGET_FILE:scw>' vectors verify user_disparity_small"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("vectors:scw vectors disparity makes a two-frame set at the small build"
+                     PROPERTIES FIXTURES_SETUP scw_user_disparity_small_set)
+scw_replay_user_set(user_disparity_small scw_user_disparity_small_set
+                    "the two-frame small-build disparity set replays")
+add_test(NAME "vectors:scw vectors disparity refuses a window the build is not made with"
+         COMMAND $<TARGET_FILE:scw> vectors disparity --config thesis --ppc 1 --window 9
+                 --left "${_tsukuba}/scene1.row3.col3.ppm" --right "${_tsukuba}/scene1.row3.col4.ppm"
+                 --out user_badwindow
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("vectors:scw vectors disparity refuses a window the build is not made with"
+                     PROPERTIES PASS_REGULAR_EXPRESSION "the thesis build matches with N = 21; give --window 21")
+
+# Two maps back to back at a crop smaller than the build (40 x 30): the Tsukuba pair matched in
+# opencv and in thesis mode, labelled, verified and replayed in both simulators.
+add_test(NAME "vectors:scw vectors labelling makes a two-frame set from a user's maps"
+         COMMAND bash -c "rm -rf user_labelling2 && for m in opencv thesis; do \
+                            '$<TARGET_FILE:scw>' disparity --left '${_tsukuba}/scene1.row3.col3.ppm' \
+                            --right '${_tsukuba}/scene1.row3.col4.ppm' --window 9 --min-disp 0 \
+                            --max-disp 15 --mode $m --out user2_$m.png --out16 user2_16_$m.png \
+                            || exit 1; \
+                          done && '$<TARGET_FILE:scw>' vectors labelling \
+                          --disparity user2_16_opencv.png user2_16_thesis.png \
+                          --roi 144 112 40 30 --out user_labelling2 && \
+                          '$<TARGET_FILE:scw>' vectors verify user_labelling2"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("vectors:scw vectors labelling makes a two-frame set from a user's maps"
+                     PROPERTIES FIXTURES_SETUP scw_user_labelling2_set)
+scw_replay_user_set(user_labelling2 scw_user_labelling2_set
+                    "the two-frame labelling set from a user's maps replays")
+
+# A pipeline set of raw frames and a calibration: three synthetic street frames taken as raw and
+# rectified with a made-up 64 x 32 rig's grid maps (tests/vectors/small_rig_64x32.yml), checked
+# against the Verilated small top by the generator, verified and replayed in both simulators.
+add_test(NAME "vectors:scw vectors pipeline makes a set of raw frames with a calibration"
+         COMMAND bash -c "rm -rf user_pipeline_calib && '$<TARGET_FILE:scw>' vectors pipeline \
+                          --config small --frames 3 \
+                          --calib '${PROJECT_SOURCE_DIR}/tests/vectors/small_rig_64x32.yml' \
+                          --out user_pipeline_calib && \
+                          '$<TARGET_FILE:scw>' vectors verify user_pipeline_calib"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("vectors:scw vectors pipeline makes a set of raw frames with a calibration"
+                     PROPERTIES FIXTURES_SETUP scw_user_pipeline_calib_set)
+scw_replay_user_set(user_pipeline_calib scw_user_pipeline_calib_set
+                    "the pipeline set of raw frames with a calibration replays")
+add_test(NAME "vectors:scw vectors pipeline refuses a calibration of another size"
+         COMMAND $<TARGET_FILE:scw> vectors pipeline --config small --frames 1
+                 --calib "${_chess}/derived_stereo_calibration_helper.yml" --out user_badcalib
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("vectors:scw vectors pipeline refuses a calibration of another size"
+                     PROPERTIES PASS_REGULAR_EXPRESSION "calibrates 640x480 images, the frames are 64x32")
+
+# --sequence reads a folder of numbered pairs in name order: the same pairs given as --left and
+# --right make the same set byte for byte (the committed texture pair, then the same swapped).
+set(_texture "${PROJECT_SOURCE_DIR}/vectors/disparity/texture")
+add_test(NAME "vectors:scw vectors pipeline --sequence equals the same pairs given as --left and --right"
+         COMMAND bash -c "rm -rf user_seq user_seq_a user_seq_b && mkdir user_seq && \
+                          cp '${_texture}/left.png' user_seq/0000_left.png && \
+                          cp '${_texture}/right.png' user_seq/0000_right.png && \
+                          cp '${_texture}/right.png' user_seq/0001_left.png && \
+                          cp '${_texture}/left.png' user_seq/0001_right.png && \
+                          '$<TARGET_FILE:scw>' vectors pipeline --engine cpp --sequence user_seq \
+                          --out user_seq_a && \
+                          '$<TARGET_FILE:scw>' vectors pipeline --engine cpp \
+                          --left '${_texture}/left.png' '${_texture}/right.png' \
+                          --right '${_texture}/right.png' '${_texture}/left.png' --out user_seq_b && \
+                          for f in user_seq_a/*; do cmp \"$f\" \"user_seq_b/\${f#user_seq_a/}\" || exit 1; done"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})

@@ -8,7 +8,8 @@
 // +dmin +num_disp +prefilter +cap +sad_limit +texture +uniqueness +subpixel +opencv_invalid
 // +edge (edge_candidates).
 // Parameters: config.ppc, max_width_px, max_height, window, num_disp (built candidates) and the
-// hex files' meta.beats (all three files of a set have W * H / Ppc beats).
+// hex files' meta.beats (all three files of a set have frames x W * H / Ppc beats: frames back to
+// back).
 module tb_disparity_replay #(
   parameter int Ppc        = 2,
   parameter int MaxWidthPx = 128,
@@ -44,8 +45,9 @@ module tb_disparity_replay #(
         !$value$plusargs("edge=%d", edge_cand))
       $fatal(1, "give the set's config: +width +height +dmin +num_disp +prefilter +cap ",
              "+sad_limit +texture +uniqueness +subpixel +opencv_invalid +edge");
-    if (width * height / Ppc != Beats)
-      $fatal(1, "%0d x %0d at %0d px per beat is not %0d beats", width, height, Ppc, Beats);
+    if (Beats % (width * height / Ppc) != 0)
+      $fatal(1, "%0d beats are not whole %0d x %0d frames at %0d px per beat", Beats, width,
+             height, Ppc);
     $readmemh({dir, "/left.hex"}, l_mem, 0, Beats - 1);
     $readmemh({dir, "/right.hex"}, r_mem, 0, Beats - 1);
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
@@ -108,7 +110,8 @@ module tb_disparity_replay #(
     if (err) $fatal(1, "err_o on a well-formed frame (cycle %0d)", cyc);
     if (out_valid && out_ready) begin
       if ({out_eol, out_sof, out_data} !== exp_mem[o])
-        $fatal(1, "beat %0d (row %0d): got %h, expected %h", o, o / (width / Ppc),
+        $fatal(1, "beat %0d (frame %0d, row %0d): got %h, expected %h", o,
+               o / (width * height / Ppc), o % (width * height / Ppc) / (width / Ppc),
                {out_eol, out_sof, out_data}, exp_mem[o]);
       o <= o + 1;
       if (o + 1 == Beats) begin
