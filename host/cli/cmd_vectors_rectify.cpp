@@ -38,9 +38,9 @@ void print(const vec::RectifySetSummary& s, const std::string& out) {
   if (s.rtl)
     std::cout << "RTL: " << s.rtl_beats << " beats equal the integer reference and the C++ "
               << "model, cycle for cycle\n";
-  std::cout << "wrote " << out << "/ (" << s.width << "x" << s.height << ", P = " << s.ppc
-            << ", lead " << s.lead_rows << " rows, " << s.rows_needed << " of " << s.rows
-            << " raw rows in flight)\n";
+  std::cout << "wrote " << out << "/ (" << s.frames << " frame(s) of " << s.width << "x" << s.height
+            << ", P = " << s.ppc << ", lead " << s.lead_rows << " rows, " << s.rows_needed << " of "
+            << s.rows << " raw rows in flight)\n";
 }
 
 }  // namespace
@@ -63,10 +63,12 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                                  "chessboard_right (128x96 crop of the bundled pair, real "
                                  "calibration)");
   preset->check(CLI::IsMember(vec::rectify_presets()));
-  auto* left = cmd->add_option("--left", o->pair.left, "Your raw left image (instead of a preset)")
-                   ->check(CLI::ExistingFile);
-  auto* right =
-      cmd->add_option("--right", o->pair.right, "Your raw right image")->check(CLI::ExistingFile);
+  auto* left =
+      cmd->add_option("--left", o->pair.left,
+                      "Your raw left images (instead of a preset), a frame each, back to back")
+          ->check(CLI::ExistingFile);
+  auto* right = cmd->add_option("--right", o->pair.right, "Your raw right images, as many")
+                    ->check(CLI::ExistingFile);
   auto* calib = cmd->add_option("--calib", o->pair.calib,
                                 "Your pair's calibration: OpenCV FileStorage M1 D1 M2 D2 R T, as "
                                 "scw run --calib reads it")

@@ -66,7 +66,7 @@ rectify::FixedMap as_fixed(const std::vector<MapPoint>& m, int w, int h) {
 Frame synthetic(const std::string& preset) {
   constexpr int w = kSynthWidth, h = kSynthHeight;
   Frame f;
-  f.raw = pattern_image(w, h);
+  f.raw = {pattern_image(w, h)};
   std::ostringstream d;
   d << "scw_rectify: " << w << "x" << h << " test card (8x8 checks, gradient, hashed texture) ";
   if (preset == "shift") {
@@ -149,24 +149,32 @@ Crop crop_camera(const cv::Mat& raw, const rectify::FixedMap& full, cv::Rect roi
   return c;
 }
 
-/// One camera of a calibrated raw pair: the output ROI at `roi_at` of `size` (empty: the whole
-/// image), rectified with the pair's calibration (both cameras' maps plan the one lead).
-/// `source` names the camera's image in the description.
+/// One camera of calibrated raw pairs: the output ROI at `roi_at` of `size` (empty: the whole
+/// image), rectified with the pairs' calibration (both cameras' maps plan the one lead), a frame
+/// a pair. `source` names the camera's images in the description.
 Frame calibrated(const UserCalibratedPair& u, cv::Point roi_at, cv::Size size,
                  const std::string& source) {
-  const cv::Mat left_raw = host::io::read_grey_image(u.left);
-  const cv::Mat right_raw = host::io::read_grey_image(u.right);
+  if (u.left.empty() || u.left.size() != u.right.size())
+    throw std::invalid_argument("vectors rectify: give as many --right images as --left (" +
+                                std::to_string(u.left.size()) + " and " +
+                                std::to_string(u.right.size()) + ")");
   const bool right = u.right_camera;
-  const auto calib = rectify::load_stereo_calibration(u.calib.string(), left_raw.size());
-  for (const auto* p : {&u.left, &u.right}) {
-    const cv::Mat& img = p == &u.left ? left_raw : right_raw;
-    if (img.size() != calib.image_size)
-      throw std::runtime_error("vectors rectify: " + p->string() + " is " +
-                               std::to_string(img.cols) + "x" + std::to_string(img.rows) +
-                               ", the calibration " + u.calib.string() + " is for " +
-                               std::to_string(calib.image_size.width) + "x" +
-                               std::to_string(calib.image_size.height) + " images");
+  std::vector<cv::Mat> left_raw, right_raw;
+  for (std::size_t i = 0; i < u.left.size(); ++i) {
+    left_raw.push_back(host::io::read_grey_image(u.left[i]));
+    right_raw.push_back(host::io::read_grey_image(u.right[i]));
   }
+  const auto calib = rectify::load_stereo_calibration(u.calib.string(), left_raw[0].size());
+  for (std::size_t i = 0; i < u.left.size(); ++i)
+    for (const bool r : {false, true}) {
+      const cv::Mat& img = r ? right_raw[i] : left_raw[i];
+      if (img.size() != calib.image_size)
+        throw std::runtime_error("vectors rectify: " + (r ? u.right : u.left)[i].string() + " is " +
+                                 std::to_string(img.cols) + "x" + std::to_string(img.rows) +
+                                 ", the calibration " + u.calib.string() + " is for " +
+                                 std::to_string(calib.image_size.width) + "x" +
+                                 std::to_string(calib.image_size.height) + " images");
+    }
   const auto rect = rectify::rectify_calibration(calib);
   const auto full_l = rectify::quantise_map(rect.map1_x, rect.map1_y, kFracBits);
   const auto full_r = rectify::quantise_map(rect.map2_x, rect.map2_y, kFracBits);
@@ -178,31 +186,38 @@ Frame calibrated(const UserCalibratedPair& u, cv::Point roi_at, cv::Size size,
                              std::to_string(roi.height) + " ROI must lie inside the " +
                              std::to_string(full_l.width) + " x " + std::to_string(full_l.height) +
                              " rectified image");
-  const Crop cl = crop_camera(left_raw, full_l, roi, u.left.filename().string());
-  const Crop cr = crop_camera(right_raw, full_r, roi, u.right.filename().string());
-  const Crop& c = right ? cr : cl;
-
   Frame f;
-  f.raw = c.raw;
-  f.map = c.map;
-  // Left and right share one lead, as the host runs a stereo pair, so both sets have one config.
-  f.windows = {rectify::row_window(as_fixed(cl.map, roi.width, roi.height)),
-               rectify::row_window(as_fixed(cr.map, roi.width, roi.height))};
+  cv::Point origin;
+  for (std::size_t i = 0; i < u.left.size(); ++i) {
+    const Crop cl = crop_camera(left_raw[i], full_l, roi, u.left[i].filename().string());
+    const Crop cr = crop_camera(right_raw[i], full_r, roi, u.right[i].filename().string());
+    const Crop& c = right ? cr : cl;
+    f.raw.push_back(c.raw);
+    if (i > 0) continue;  // the maps, and so the crop, are every frame's
+    f.map = c.map;
+    origin = c.origin;
+    // Left and right share one lead, as the host runs a stereo pair, so both sets have one
+    // config.
+    f.windows = {rectify::row_window(as_fixed(cl.map, roi.width, roi.height)),
+                 rectify::row_window(as_fixed(cr.map, roi.width, roi.height))};
+  }
   std::ostringstream d;
   d << "scw_rectify: " << source << " rectified with " << u.calib.filename().string()
     << " (stereoRectify alpha " << rect.alpha << ", CALIB_ZERO_DISPARITY): output ROI x " << roi.x
     << " y " << roi.y << " " << roi.width << "x" << roi.height << " of the " << full_l.width << "x"
-    << full_l.height << " rectified image; raw input = the crop at x " << c.origin.x << " y "
-    << c.origin.y << ", map shifted to it (equal to rectifying the whole image)";
+    << full_l.height << " rectified image; raw input = the crop at x " << origin.x << " y "
+    << origin.y << ", map shifted to it (equal to rectifying the whole image)";
   f.description = d.str();
   return f;
 }
 
 /// The bundled chessboard pair: its files must be in `dir`.
 Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, cv::Size size, bool right) {
-  const UserCalibratedPair u{dir / "left01.jpg", dir / "right01.jpg",
-                             dir / "derived_stereo_calibration_helper.yml", right};
-  for (const auto& p : {u.left, u.right, u.calib})
+  const UserCalibratedPair u{{dir / "left01.jpg"},
+                             {dir / "right01.jpg"},
+                             dir / "derived_stereo_calibration_helper.yml",
+                             right};
+  for (const auto& p : {u.left[0], u.right[0], u.calib})
     if (!std::filesystem::exists(p))
       throw std::runtime_error("no '" + p.string() +
                                "'; the chessboard sets need data/chessboard (give --data-dir)");
@@ -272,9 +287,10 @@ void write_files(const std::filesystem::path& dir, const Frame& f, int lead_rows
                  const std::vector<typename Params::pixel_beat>& expect,
                  const std::vector<std::uint8_t>& ref) {
   constexpr int P = Params::kPpc;
-  const int w = f.raw.cols, h = f.raw.rows;
+  const int w = f.raw[0].cols, h = f.raw[0].rows;
   nlohmann::json config = {{"width", w},
                            {"height", h},
+                           {"frames", f.raw.size()},
                            {"ppc", P},
                            {"frac_bits", Params::kFracBits},
                            {"coord_bits", Params::kCoordBits},
@@ -284,12 +300,14 @@ void write_files(const std::filesystem::path& dir, const Frame& f, int lead_rows
                            {"max_width_px", Params::kMaxWidthPx},
                            {"max_height", Params::kMaxHeight}};
   VectorWriter vw(dir, "rectify", config, f.description);
-  vw.add_image("input.png", "input", f.raw);
+  cv::Mat raws;
+  cv::vconcat(f.raw, raws);
+  vw.add_image("input.png", "input", raws);
   vw.add_hex("input.hex", "input", sim::pack_all(raw_beats), pixel_beat_layout(P, 8));
   vw.add_hex("map.hex", "input", sim::pack_all(map_beats),
              map_beat_layout(P, Params::kCoordBits));
   vw.add_hex("expected.hex", "expected", sim::pack_all(expect), pixel_beat_layout(P, 8));
-  cv::Mat out_img(h, w, CV_8UC1);
+  cv::Mat out_img(h * static_cast<int>(f.raw.size()), w, CV_8UC1);
   std::copy(ref.begin(), ref.end(), out_img.data);
   vw.add_image("expected.png", "expected", out_img);
   vw.finish();
@@ -301,7 +319,7 @@ RectifySetSummary run(const Frame& f, const std::string& preset, const sim::Stal
   constexpr int P = Params::kPpc;
   using PixelBeat = typename Params::pixel_beat;
   using MapBeat = typename Params::map_beat;
-  const int w = f.raw.cols, h = f.raw.rows;
+  const int w = f.raw[0].cols, h = f.raw[0].rows;
   if (w > Params::kMaxWidthPx || h > Params::kMaxHeight || w % P != 0 || w / P < 2)
     throw std::invalid_argument("vectors rectify: a " + std::to_string(w) + "x" +
                                 std::to_string(h) + " frame does not fit the build (up to " +
@@ -310,12 +328,24 @@ RectifySetSummary run(const Frame& f, const std::string& preset, const sim::Stal
   const auto plan = rectify::plan_for_stage(f.windows, Params::kRows, "vectors rectify " + preset);
   const hls::rectify::RectifyConfig cfg{w, h, plan.lead_rows};
 
-  const cv::Mat raw = f.raw.isContinuous() ? f.raw : f.raw.clone();
-  const auto raw_beats = sim::frame_beats_of<PixelBeat>(raw.ptr<std::uint8_t>(), w, h);
-  const auto map_beats = sim::frame_beats_of<MapBeat>(f.map.data(), w, h);
-  const auto ref = reference::rectify_reference(raw.ptr<std::uint8_t>(), w, h, f.map.data(), w, h,
-                                                Params::kFracBits);
-  const auto expect = sim::frame_beats_of<PixelBeat>(ref.data(), w, h);
+  // Frames back to back, each with the one map.
+  std::vector<PixelBeat> raw_beats, expect;
+  std::vector<MapBeat> map_beats;
+  std::vector<std::uint8_t> ref;
+  const auto frame_map = sim::frame_beats_of<MapBeat>(f.map.data(), w, h);
+  for (const cv::Mat& m : f.raw) {
+    if (m.size() != f.raw[0].size())
+      throw std::logic_error("vectors rectify: the frames are not one size");
+    const cv::Mat raw = m.isContinuous() ? m : m.clone();
+    const auto rb = sim::frame_beats_of<PixelBeat>(raw.ptr<std::uint8_t>(), w, h);
+    const auto fr = reference::rectify_reference(raw.ptr<std::uint8_t>(), w, h, f.map.data(), w, h,
+                                                 Params::kFracBits);
+    const auto eb = sim::frame_beats_of<PixelBeat>(fr.data(), w, h);
+    raw_beats.insert(raw_beats.end(), rb.begin(), rb.end());
+    map_beats.insert(map_beats.end(), frame_map.begin(), frame_map.end());
+    ref.insert(ref.end(), fr.begin(), fr.end());
+    expect.insert(expect.end(), eb.begin(), eb.end());
+  }
 
   // The C++ model always runs; the RTL when the caller brings one (at P = 2 only).
   auto cpp = std::make_unique<sim::RectifyModel<Params>>(cfg);
@@ -331,6 +361,7 @@ RectifySetSummary run(const Frame& f, const std::string& preset, const sim::Stal
   write_files<Params>(dir, f, plan.lead_rows, raw_beats, map_beats, expect, ref);
   sum.width = w;
   sum.height = h;
+  sum.frames = static_cast<int>(f.raw.size());
   sum.ppc = P;
   sum.beats = rc.out.size();
   sum.cycles = rc.cycles;
@@ -360,10 +391,12 @@ RectifyFrame rectify_preset(const std::string& name, const std::filesystem::path
 }
 
 RectifyFrame rectify_frame(const UserCalibratedPair& pair, cv::Point roi, cv::Size size) {
-  const auto& image = pair.right_camera ? pair.right : pair.left;
-  return calibrated(
-      pair, roi, size,
-      image.filename().string() + (pair.right_camera ? " (right" : " (left") + " camera)");
+  std::string source;
+  for (const auto& image : pair.right_camera ? pair.right : pair.left)
+    source += (source.empty() ? "" : ", ") + image.filename().string();
+  return calibrated(pair, roi, size,
+                    source + (pair.right_camera ? " (right" : " (left") + " camera, " +
+                        std::to_string(pair.left.size()) + " frame(s) back to back)");
 }
 
 void check_rectify_rtl_ppc(int ppc, const std::string& build) {

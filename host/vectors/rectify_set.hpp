@@ -27,9 +27,10 @@ using RectifyVecParams = hls::rectify::RectifyParams<P, 128, 96, kRectifyVecRows
 constexpr int kRectifyVecRtlPpc = 2;
 using RectifyRtlParams = RectifyVecParams<kRectifyVecRtlPpc>;
 
-/// One frame to rectify: raw image, map (same size), and which other maps share the lead.
+/// Frames to rectify with one map: raw images, the map (same size), and which other maps share
+/// the lead.
 struct RectifyFrame {
-  cv::Mat raw;                                   // 8UC1, width x height
+  std::vector<cv::Mat> raw;                      // 8UC1, width x height, frames back to back
   std::vector<hls::rectify::MapPoint> map;       // width * height, raster order
   std::vector<scw::rectify::RowWindow> windows;  // every map the stage's lead is planned for
   std::string description;
@@ -48,13 +49,14 @@ inline const cv::Size kRectifyCropSize{128, 96};
 RectifyFrame rectify_preset(const std::string& name, const std::filesystem::path& data_dir,
                             cv::Point roi, cv::Size size = kRectifyCropSize);
 
-/// A raw pair of the user's and its calibration (OpenCV FileStorage M1 D1 M2 D2 R T, as `scw run
+/// Raw pairs of the user's and their calibration (OpenCV FileStorage M1 D1 M2 D2 R T, as `scw run
 /// --calib` reads it); a set is one camera of it.
 struct UserCalibratedPair {
-  std::filesystem::path left, right, calib;
+  std::vector<std::filesystem::path> left, right;  // a pair a frame
+  std::filesystem::path calib;
   bool right_camera = false;
 };
-/// The frame of one camera of a user's pair: the rectified ROI at `roi` of `size` (empty: the
+/// The frames of one camera of a user's pairs: the rectified ROI at `roi` of `size` (empty: the
 /// whole image). Throws std::runtime_error naming the file that is not an image or not the
 /// calibration's size, and the ROI that lies outside the image or whose taps span more raw rows
 /// or columns than the crop.
@@ -85,7 +87,7 @@ const std::vector<std::string>& rectify_builds();
 
 /// What write_rectify_set() checked and wrote, for the CLI to print.
 struct RectifySetSummary {
-  int width = 0, height = 0, ppc = 0;
+  int width = 0, height = 0, ppc = 0, frames = 0;
   std::size_t beats = 0;    // output beats, each equal to the integer reference
   std::int64_t cycles = 0;  // the C++ model's run under `stalls`
   std::string stalls;       // the pattern's name

@@ -186,3 +186,17 @@ add_test(NAME "vectors:scw vectors pipeline --sequence equals the same pairs giv
                           --right '${_texture}/right.png' '${_texture}/left.png' --out user_seq_b && \
                           for f in user_seq_a/*; do cmp \"$f\" \"user_seq_b/\${f#user_seq_a/}\" || exit 1; done"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+
+# Two raw pairs back to back through one rectify stage (the chessboard pair, then the same pair
+# swapped), one map: verified and replayed in both simulators.
+add_test(NAME "vectors:scw vectors rectify makes a two-frame set from a user's raw pairs"
+         COMMAND bash -c "rm -rf user_rectify2 && '$<TARGET_FILE:scw>' vectors rectify \
+                          --left '${_chess}/left01.jpg' '${_chess}/right01.jpg' \
+                          --right '${_chess}/right01.jpg' '${_chess}/left01.jpg' \
+                          --calib '${_chess}/derived_stereo_calibration_helper.yml' \
+                          --out user_rectify2 && '$<TARGET_FILE:scw>' vectors verify user_rectify2"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("vectors:scw vectors rectify makes a two-frame set from a user's raw pairs"
+                     PROPERTIES FIXTURES_SETUP scw_user_rectify2_set)
+scw_replay_user_set(user_rectify2 scw_user_rectify2_set
+                    "the two-frame rectify set from a user's raw pairs replays")

@@ -7,7 +7,7 @@
 // Run: +vectors=<set folder> +width=<W> +height=<H> +lead=<D>, from the set's manifest.json
 // (config.width, config.height, config.lead_rows). Parameters: config.ppc, max_width_px,
 // max_height, rows, frac_bits, coord_bits, and the hex files' meta.beats (all three files of a
-// set have W * H / Ppc beats).
+// set have frames x W * H / Ppc beats: frames back to back, each with the one map).
 module tb_rectify_replay #(
   parameter int Ppc        = 2,
   parameter int MaxWidthPx = 128,
@@ -42,8 +42,9 @@ module tb_rectify_replay #(
     if (CoordBits != DutCoordBits)
       $fatal(1, "coord_bits %0d in the manifest, but scw_rectify derives %0d", CoordBits,
              DutCoordBits);
-    if (width * height / Ppc != Beats)
-      $fatal(1, "%0d x %0d at %0d px per beat is not %0d beats", width, height, Ppc, Beats);
+    if (Beats % (width * height / Ppc) != 0)
+      $fatal(1, "%0d beats are not whole %0d x %0d frames at %0d px per beat", Beats, width,
+             height, Ppc);
     $readmemh({dir, "/input.hex"}, in_mem, 0, Beats - 1);
     $readmemh({dir, "/map.hex"}, map_mem, 0, Beats - 1);
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
@@ -108,7 +109,8 @@ module tb_rectify_replay #(
     if (err != '0) $fatal(1, "err_o = %b on a well-formed frame (cycle %0d)", err, cyc);
     if (out_valid && out_ready) begin
       if ({out_eol, out_sof, out_data} !== exp_mem[o])
-        $fatal(1, "beat %0d (row %0d): got %h, expected %h", o, o / (width / Ppc),
+        $fatal(1, "beat %0d (frame %0d, row %0d): got %h, expected %h", o,
+               o / (width * height / Ppc), o % (width * height / Ppc) / (width / Ppc),
                {out_eol, out_sof, out_data}, exp_mem[o]);
       o <= o + 1;
       if (o + 1 == Beats) begin
