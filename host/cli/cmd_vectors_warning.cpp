@@ -62,6 +62,10 @@ void add_vectors_warning_command(CLI::App& vectors) {
   cmd->add_option("--spread-k", w.spread_k, "With --objects: k of the spread rule")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 15.9375));
+  cmd->add_option("--config", o->user.build,
+                  "With --objects: the build: vectors (a reciprocal table below 128 px; the "
+                  "committed sets), or the pipeline's small, tsukuba (32 px) or thesis (128 px)")
+      ->check(CLI::IsMember(vec::warning_builds()));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->callback([o] {
     if (o->preset.empty() && o->user.objects.empty())

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "hls/pipeline/pipeline_params.hpp"
 #include "hls/warning/warning.hpp"
 #include "host/vectors/labelling_set.hpp"
 #include "host/vectors/object_tables.hpp"
@@ -39,7 +40,6 @@ using hls::warning::WarningConfig;
 using host::warning::WarningSetup;
 
 using VecParams = WarningVecParams;
-using Model = sim::WarningModel<VecParams>;
 using OutLayout = sim::BeatLayout<ResultPacket>;
 using Frame = WarningFrame;
 using Preset = WarningPreset;
@@ -266,8 +266,9 @@ std::vector<LabelPacket> frame_words(const Frame& f) {
 
 /// What the stage must report for a frame: a plain fold of evaluate() over its objects, and the
 /// flags as docs/warning.md states them (not the kernel's code).
+template <typename Params>
 FrameResult expected_result(const Frame& f, const WarningConfig& cfg) {
-  FrameResult r = fixtures::fold_table<VecParams>(f.objects, cfg);
+  FrameResult r = fixtures::fold_table<Params>(f.objects, cfg);
   if (f.shape == Shape::kLastNoStatus) {
     r.stream_error = true;
     return r;
@@ -278,9 +279,10 @@ FrameResult expected_result(const Frame& f, const WarningConfig& cfg) {
   return r;
 }
 
+template <typename Params>
 void check_frame(const Frame& f, const FrameResult& got, const WarningConfig& cfg) {
   const std::string at = "vectors warning: frame '" + f.name + "': ";
-  if (got != expected_result(f, cfg))
+  if (got != expected_result<Params>(f, cfg))
     throw std::logic_error(at + "the model's result differs from a plain fold of evaluate()");
   if (!f.check_severity) return;
   const int index = got.index == 0xffff ? -1 : got.index;
@@ -295,9 +297,10 @@ void check_frame(const Frame& f, const FrameResult& got, const WarningConfig& cf
 }
 
 /// Every word back to back through one stage, no stalls, from reset; one result per frame.
+template <typename Params>
 std::vector<ResultPacket> run_model(const WarningConfig& cfg, const std::vector<LabelPacket>& in,
                                     std::size_t frames, std::int64_t& cycles) {
-  Model model(cfg);
+  sim::WarningModel<Params> model(cfg);
   std::vector<ResultPacket> out;
   std::size_t next = 0;
   const std::int64_t limit = static_cast<std::int64_t>(in.size()) + 4 * hls::warning::kLatency + 16;
@@ -342,15 +345,16 @@ std::vector<LabelPacket> stream_words(const Preset& p, std::vector<std::size_t>&
 }
 
 /// The model's results, each checked, and the same again under stalls.
+template <typename Params>
 std::vector<ResultPacket> checked_results(const Preset& p, const WarningConfig& cfg,
                                           const std::vector<LabelPacket>& in,
                                           std::int64_t& cycles) {
-  const auto out = run_model(cfg, in, p.frames.size(), cycles);
+  const auto out = run_model<Params>(cfg, in, p.frames.size(), cycles);
   if (out.size() != p.frames.size())
     throw std::logic_error("vectors warning: the model closed another number of frames");
-  for (std::size_t i = 0; i < out.size(); ++i) check_frame(p.frames[i], out[i].data, cfg);
+  for (std::size_t i = 0; i < out.size(); ++i) check_frame<Params>(p.frames[i], out[i].data, cfg);
   // A replay stalls both sides; the results it must see cannot depend on that.
-  Model m(cfg);
+  sim::WarningModel<Params> m(cfg);
   const auto r = sim::run_stream(m, in, sim::StallPattern{sim::StallKind::kBoth, 0}, out.size(),
                                  4 * static_cast<std::int64_t>(in.size()) + 100'000);
   if (r.timed_out || !r.violations.empty() || r.out != out)
@@ -505,6 +509,7 @@ WarningPreset warning_preset(const std::string& name) {
 WarningPreset warning_user_preset(const UserTables& u) {
   Preset p;
   p.setup = u.setup;
+  p.build = u.build;
   p.width = u.width;
   p.height = u.height;
   if (p.setup.cu_px == 0.0 && p.setup.cv_px == 0.0) {  // as scw run: the image centre
@@ -530,15 +535,19 @@ WarningPreset warning_user_preset(const UserTables& u) {
   return p;
 }
 
-WarningSetSummary write_warning_set(const WarningPreset& p, const std::filesystem::path& dir) {
+namespace {
+
+template <typename Params>
+WarningSetSummary write_set(const WarningPreset& p, const std::filesystem::path& dir) {
   const WarningConfig cfg = host::warning::to_fixed(p.setup);
-  hls::warning::check_config<VecParams>(cfg);
+  hls::warning::check_config<Params>(cfg);
   std::vector<std::size_t> closing;  // each frame's closing word, a line of in.hex
   const std::vector<LabelPacket> in = stream_words(p, closing);
   WarningSetSummary sum;
-  const auto out = checked_results(p, cfg, in, sum.cycles);
-  const nlohmann::json config = {{"max_disparity_px", kWarningVecMaxDisparityPx},
-                                 {"table_size", VecParams::kTableSize},
+  const auto out = checked_results<Params>(p, cfg, in, sum.cycles);
+  const nlohmann::json config = {{"build", p.build},
+                                 {"max_disparity_px", Params::kMaxDisparityPx},
+                                 {"table_size", Params::kTableSize},
                                  {"latency", hls::warning::kLatency},
                                  {"cfg", ports_json(cfg)},
                                  {"setup", setup_json(p.setup)},
@@ -557,7 +566,7 @@ WarningSetSummary write_warning_set(const WarningPreset& p, const std::filesyste
       word_rows.push_back(word_row(fi, line, w[k]));
       if (w[k].data.is_status) continue;
       eval_rows.push_back(
-          eval_row(fi, line, k, hls::warning::evaluate<VecParams>(w[k].data.object, cfg)));
+          eval_row(fi, line, k, hls::warning::evaluate<Params>(w[k].data.object, cfg)));
     }
     result_rows.push_back(result_row(fi, closing[fi], out[fi].data));
   }
@@ -567,6 +576,22 @@ WarningSetSummary write_warning_set(const WarningPreset& p, const std::filesyste
   sum.results = out.size();
   sum.objects = eval_rows.size();
   return sum;
+}
+
+}  // namespace
+
+const std::vector<std::string>& warning_builds() {
+  static const std::vector<std::string> kNames = {"vectors", "small", "tsukuba", "thesis"};
+  return kNames;
+}
+
+WarningSetSummary write_warning_set(const WarningPreset& p, const std::filesystem::path& dir) {
+  if (p.build == "vectors") return write_set<VecParams>(p, dir);
+  if (p.build == "small") return write_set<hls::pipeline::SmallPipeline<1>::warning>(p, dir);
+  if (p.build == "tsukuba") return write_set<hls::pipeline::TsukubaPipeline<1>::warning>(p, dir);
+  if (p.build == "thesis") return write_set<hls::pipeline::ThesisPipeline<1>::warning>(p, dir);
+  throw std::invalid_argument("vectors warning: no build '" + p.build +
+                              "' (vectors, small, tsukuba, thesis)");
 }
 
 }  // namespace scw::vectors

@@ -49,7 +49,12 @@ struct WarningPreset {
   std::vector<WarningFrame> frames;
   std::string description;
   int width = 1280, height = 480;  // the image the objects lie in (for the description only)
+  std::string build = "vectors";   // warning_builds()
 };
+
+/// The builds a set is made at: "vectors" (WarningVecParams; the committed sets) and the
+/// pipeline's "small", "tsukuba" (a table for disparities below 32 px) and "thesis" (128 px).
+const std::vector<std::string>& warning_builds();
 
 /// The presets `scw vectors warning` writes: "thesis", "random" and "malformed".
 const std::vector<std::string>& warning_presets();
@@ -64,6 +69,7 @@ struct UserTables {
   std::filesystem::path objects, status;  // status: optional
   host::warning::WarningSetup setup;      // cu_px = cv_px = 0: the image centre
   int width = 1280, height = 480;         // the image the objects lie in
+  std::string build = "vectors";
 };
 /// The preset of a user's tables: every frame checked only against the plain fold of evaluate().
 /// Throws std::runtime_error naming the file, line and column of a bad value.

@@ -89,12 +89,14 @@ set_tests_properties("vectors:scw vectors rectify refuses a pair not of the cali
                      PROPERTIES PASS_REGULAR_EXPRESSION "is 384x288, the calibration .* is for 640x480 images")
 
 # A warning set from a user's object tables: a labelling set's object and status CSVs (the
-# committed shapes set, 5 frames) on a rig of one's own, verified, then replayed in both simulators.
+# committed shapes set, 5 frames) on a rig of one's own at the small build (a reciprocal table
+# below 32 px), verified, then replayed in both simulators.
 add_test(NAME "vectors:scw vectors warning from a user's object tables makes a set"
          COMMAND bash -c "rm -rf user_warning && '$<TARGET_FILE:scw>' vectors warning \
                           --objects '${PROJECT_SOURCE_DIR}/vectors/labelling/shapes/expected_objects.csv' \
                           --status '${PROJECT_SOURCE_DIR}/vectors/labelling/shapes/expected_status.csv' \
-                          --image-size 64 48 --focal 60 --baseline 0.3 --out user_warning && \
+                          --image-size 64 48 --focal 60 --baseline 0.3 --max-disp 16 \
+                          --config small --out user_warning && \
                           '$<TARGET_FILE:scw>' vectors verify user_warning"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("vectors:scw vectors warning from a user's object tables makes a set"
