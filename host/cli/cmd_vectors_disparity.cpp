@@ -8,6 +8,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/vectors/disparity_set.hpp"
+#include "host/vectors/vector_set.hpp"
 
 namespace scw::cli {
 
@@ -15,6 +16,7 @@ namespace vec = scw::vectors;
 
 void add_vectors_disparity_command(CLI::App& vectors) {
   struct Options {
+    int frames = 0;  // 0: as given
     std::string preset, out, mode = "opencv";
     std::string data_dir = "data/tsukuba";
     vec::UserPair pair;
@@ -58,6 +60,10 @@ void add_vectors_disparity_command(CLI::App& vectors) {
   cmd->add_option("--dmin", o->pair.dmin, "With --left/--right: the first of the 16 candidates");
   cmd->add_option("--edge-candidates", o->pair.edge_candidates,
                   "With --left/--right: decide the left edge band from K candidates (0: blind)");
+  cmd->add_option("--frames", o->frames,
+                  "K frames back to back: the first K of your inputs (or the preset's), or all "
+                  "of them in order, repeated up to K")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir, "Folder with the Tsukuba PPMs");
   cmd->callback([o] {
@@ -70,6 +76,10 @@ void add_vectors_disparity_command(CLI::App& vectors) {
       o->pair.mode = disparity::mode_from_name(o->mode);
       if (!o->roi.empty()) o->pair.roi = cv::Rect(o->roi[0], o->roi[1], o->roi[2], o->roi[3]);
       f = vec::disparity_frames(o->pair);
+    }
+    if (o->frames > 0) {
+      vec::repeat_frames(f.left, o->frames);
+      vec::repeat_frames(f.right, o->frames);
     }
     const auto s = vec::write_disparity_set(f, o->out);
     std::cout << "C++ model: " << s.beats << " beats equal the direct reference (" << s.cycles

@@ -8,6 +8,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/vectors/labelling_set.hpp"
+#include "host/vectors/vector_set.hpp"
 
 namespace scw::cli {
 
@@ -15,6 +16,7 @@ namespace vec = scw::vectors;
 
 void add_vectors_labelling_command(CLI::App& vectors) {
   struct Options {
+    int frames = 0;  // 0: as given
     std::string preset, out;
     std::string data_dir = "data/tsukuba";
     vec::UserMap map;
@@ -46,6 +48,10 @@ void add_vectors_labelling_command(CLI::App& vectors) {
       ->check(CLI::IsMember(vec::labelling_builds()));
   cmd->add_option("--floor", o->map.floor, "With --disparity: the lowest valid value (Q11.4)");
   cmd->add_option("--min-area", o->map.min_area, "With --disparity: the smallest object");
+  cmd->add_option("--frames", o->frames,
+                  "K frames back to back: the first K of your inputs (or the preset's), or all "
+                  "of them in order, repeated up to K")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir, "Folder with truedisp.row3.col3.pgm");
   cmd->callback([o] {
@@ -62,6 +68,7 @@ void add_vectors_labelling_command(CLI::App& vectors) {
       }
       p = vec::labelling_frames(o->map);
     }
+    if (o->frames > 0) vec::repeat_frames(p.frames, o->frames);
     const auto s = vec::write_labelling_set(p, o->out);
     std::cout << "C++ model: " << s.frames << " frames, " << s.words
               << " words, checked against the flood-fill reference (" << s.cycles << " cycles)\n";

@@ -6,13 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "Vcli_rectify_p2.h"
+#include "Vcli_rectify_p2_scw_rectify.h"
 #include "host/cli/commands.hpp"
 #include "host/vectors/rectify_set.hpp"
+#include "host/vectors/vector_set.hpp"
 #include "sim/core/join.hpp"
 #include "sim/rtl/rectify_rtl.hpp"
 #include "sim/rtl/rtl_params.hpp"
-#include "Vcli_rectify_p2.h"
-#include "Vcli_rectify_p2_scw_rectify.h"
 
 namespace scw::cli {
 namespace {
@@ -47,6 +48,7 @@ void print(const vec::RectifySetSummary& s, const std::string& out) {
 
 void add_vectors_rectify_command(CLI::App& vectors) {
   struct Options {
+    int frames = 0;  // 0: as given
     std::string preset, out;
     int ppc = vec::kRectifyVecRtlPpc;
     std::string engine = "rtl", stalls = "both", data_dir = "data/chessboard", build = "vectors";
@@ -92,6 +94,10 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                   "--engine cpp). The chessboard presets then take the whole image unless --roi "
                   "and --size pick a band: this calibration's whole image needs 81 raw rows")
       ->check(CLI::IsMember(vec::rectify_builds()));
+  cmd->add_option("--frames", o->frames,
+                  "K frames back to back: the first K of your inputs (or the preset's), or all "
+                  "of them in order, repeated up to K")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir,
                   "Folder with left01.jpg, right01.jpg and derived_stereo_calibration_helper.yml");
@@ -116,10 +122,11 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                                            : vec::kRectifyCropSize;
     const cv::Point roi = whole ? cv::Point() : cv::Point(o->roi[0], o->roi[1]);
     o->pair.right_camera = o->camera == "right";
-    const auto f = o->preset.empty() ? vec::rectify_frame(o->pair, roi, size)
-                                     : vec::rectify_preset(o->preset, o->data_dir, roi, size);
+    auto f = o->preset.empty() ? vec::rectify_frame(o->pair, roi, size)
+                               : vec::rectify_preset(o->preset, o->data_dir, roi, size);
     const std::string name = o->preset.empty() ? o->camera + " camera" : o->preset;
     const vec::RectifyRtl engine = rtl ? vec::RectifyRtl(run_rtl) : vec::RectifyRtl();
+    if (o->frames > 0) vec::repeat_frames(f.raw, o->frames);
     print(vec::write_rectify_set(f, name, o->ppc, stalls, engine, o->out, o->build), o->out);
   });
 }

@@ -7,6 +7,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/value_checks.hpp"
+#include "host/vectors/vector_set.hpp"
 #include "host/vectors/warning_set.hpp"
 
 namespace scw::cli {
@@ -15,6 +16,7 @@ namespace vec = scw::vectors;
 
 void add_vectors_warning_command(CLI::App& vectors) {
   struct Options {
+    int frames = 0;  // 0: as given
     std::string preset, out, rule = "spread";
     vec::UserTables user;
     std::vector<int> size;
@@ -66,6 +68,10 @@ void add_vectors_warning_command(CLI::App& vectors) {
                   "With --objects: the build: vectors (a reciprocal table below 128 px; the "
                   "committed sets), or the pipeline's small, tsukuba (32 px) or thesis (128 px)")
       ->check(CLI::IsMember(vec::warning_builds()));
+  cmd->add_option("--frames", o->frames,
+                  "K frames back to back: the first K of your inputs (or the preset's), or all "
+                  "of them in order, repeated up to K")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->callback([o] {
     if (o->preset.empty() && o->user.objects.empty())
@@ -76,8 +82,8 @@ void add_vectors_warning_command(CLI::App& vectors) {
     }
     o->user.setup.distance_rule = o->rule == "closest" ? hls::warning::DistanceRule::kClosest
                                                        : hls::warning::DistanceRule::kSpread;
-    const auto p =
-        o->preset.empty() ? vec::warning_user_preset(o->user) : vec::warning_preset(o->preset);
+    auto p = o->preset.empty() ? vec::warning_user_preset(o->user) : vec::warning_preset(o->preset);
+    if (o->frames > 0) vec::repeat_frames(p.frames, o->frames);
     const auto s = vec::write_warning_set(p, o->out);
     std::cout << "C++ model: " << s.frames << " frames, " << s.words_in << " words in, "
               << s.results << " results, checked against a plain fold of evaluate() (" << s.cycles

@@ -440,26 +440,17 @@ LabellingPreset labelling_preset(const std::string& name, const std::filesystem:
 LabellingPreset labelling_frames(const UserMap& u) {
   if (u.disparity.empty()) throw std::invalid_argument("vectors labelling: give a map");
   Preset p;
-  cv::Rect roi;
-  for (const auto& path : u.disparity) {
-    const cv::Mat m = host::io::read_disparity_q4(path);
-    if (roi.area() == 0) roi = u.roi.area() > 0 ? u.roi : cv::Rect(0, 0, m.cols, m.rows);
-    if ((roi & cv::Rect(0, 0, m.cols, m.rows)) != roi)
-      throw std::invalid_argument("vectors labelling: the crop x " + std::to_string(roi.x) + " y " +
-                                  std::to_string(roi.y) + " " + std::to_string(roi.width) + "x" +
-                                  std::to_string(roi.height) + " must lie inside the " +
-                                  std::to_string(m.cols) + "x" + std::to_string(m.rows) + " map " +
-                                  path.filename().string() + ": give --roi X Y W H");
-    p.frames.push_back({path.filename().string(), m(roi).clone(), Expect::kClean});
-  }
+  cv::Rect roi = u.roi;
+  const auto maps = crop_maps(u.disparity, roi, "vectors labelling");
+  for (std::size_t i = 0; i < maps.size(); ++i)
+    p.frames.push_back({u.disparity[i].filename().string(), maps[i], Expect::kClean});
   p.tiles_x = u.tiles_x;
   p.tiles_y = u.tiles_y;
   p.build = u.build;
   p.cfg = labelling::grid_config(roi.width, roi.height, u.tiles_x, u.tiles_y, u.floor, u.min_area);
   std::ostringstream s;
   s << "scw labelling stage (" << u.build << " build): " << p.frames.size()
-    << " frame(s) back to back, the " << roi.width << "x" << roi.height << " crop (x " << roi.x
-    << " y " << roi.y << ") of";
+    << " frame(s) back to back, the crop " << crop_text(roi) << " of";
   for (const auto& path : u.disparity) s << " " << path.filename().string();
   s << " (Q11.4), " << u.tiles_x << "x" << u.tiles_y << " tiles, floor " << u.floor << ", min area "
     << u.min_area;

@@ -37,6 +37,7 @@ struct RoadFrame {
   std::string name;
   cv::Mat d;  // CV_16UC1, disparity x 16 (Q11.4), invalid 0 or negative; at most 64 x 48
   RoadFit expect = RoadFit::kFitted;
+  bool check_fit = true;  // a user's frame: whatever the rules make of it, as the reference does
 };
 
 /// Frames streamed back to back through one stage from reset, and its configuration.
@@ -45,7 +46,13 @@ struct RoadSequence {
   std::string description;
   hls::road::RoadConfig cfg;
   std::vector<RoadFrame> frames;  // all of one size
+  std::string build = "vectors";  // road_builds()
+  int ppc = 2;                    // the pipeline builds: 1, 2 or 4 (vectors: 2)
 };
+
+/// The builds a set is made at: "vectors" (RoadVecParams; the committed sets) and the pipeline's
+/// "small", "tsukuba" and "thesis" (hls/pipeline/pipeline_configs.def) at P = 1, 2 or 4.
+const std::vector<std::string>& road_builds();
 
 /// The presets `scw vectors road` writes: "street" and "implausible".
 const std::vector<std::string>& road_presets();
@@ -58,9 +65,27 @@ const std::vector<std::string>& road_presets();
 ///     row 0, a frame of holes with too few pixels): the road stays the nominal one throughout.
 RoadSequence road_preset(const std::string& name);
 
+/// Disparity maps of the user's, one a frame (at least 4), sent back to back: 16-bit PNGs of
+/// Q11.4 values (`scw disparity --out16`), the one crop of them all (empty: the first map's whole
+/// size), and the rig the stage's nominal road comes from (road::rig_setup).
+struct UserRoadMaps {
+  std::vector<std::filesystem::path> disparity;
+  cv::Rect roi;
+  double focal_px = 700.0, baseline_m = 0.54;
+  double cy_px = -1.0;  // the principal point's row in the whole map (-1: its centre)
+  double camera_height_m = 1.2, camera_pitch_deg = 0.0;
+  int min_count = 0;  // pixels a fit needs (0: the rig default scaled to the crop, at least 50)
+  std::string build = "vectors";
+  int ppc = 2;
+};
+/// The sequence of a user's maps: every frame checked against the reference, whatever its fit.
+/// Throws std::invalid_argument naming what does not fit and std::runtime_error for a file that
+/// is not a 16-bit map.
+RoadSequence road_frames(const UserRoadMaps& maps);
+
 /// What write_road_set() checked and wrote, for the CLI to print.
 struct RoadSetSummary {
-  int frames = 0, width = 0, height = 0;
+  int frames = 0, width = 0, height = 0, ppc = 0;
   std::size_t beats = 0;       // per hex file
   std::int64_t cycles = 0;     // the model from reset to the last beat out, no stalls
   int fits = 0;                // fits applied in the stream (a frame's road from the one before)

@@ -15,6 +15,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "host/io/image_file.hpp"
+
 namespace scw::vectors {
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -308,6 +310,26 @@ std::vector<std::vector<std::string>> parse_csv(const std::string& text, const F
 }
 
 }  // namespace
+
+std::vector<cv::Mat> crop_maps(const std::vector<fs::path>& maps, cv::Rect& roi,
+                               const std::string& what) {
+  std::vector<cv::Mat> out;
+  for (const auto& path : maps) {
+    const cv::Mat m = host::io::read_disparity_q4(path);
+    if (roi.area() == 0) roi = cv::Rect(0, 0, m.cols, m.rows);
+    if ((roi & cv::Rect(0, 0, m.cols, m.rows)) != roi)
+      throw std::invalid_argument(what + ": the crop " + crop_text(roi) + " must lie inside the " +
+                                  std::to_string(m.cols) + "x" + std::to_string(m.rows) + " map " +
+                                  path.filename().string() + ": give --roi X Y W H");
+    out.push_back(m(roi).clone());
+  }
+  return out;
+}
+
+std::string crop_text(const cv::Rect& roi) {
+  return "x " + std::to_string(roi.x) + " y " + std::to_string(roi.y) + " " +
+         std::to_string(roi.width) + "x" + std::to_string(roi.height);
+}
 
 CsvTable read_csv_file(const fs::path& path) {
   FileEntry f;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -40,6 +41,26 @@ struct Manifest {
   nlohmann::json config;    ///< the stage parameters the set was generated with (an object)
   std::vector<FileEntry> files;
 };
+
+/// `frames` as `k` frames back to back (`scw vectors <stage> --frames K`): the first k, or all of
+/// them in order, again and again, up to k. Throws std::invalid_argument for k < 1 or no frame.
+template <typename T>
+void repeat_frames(std::vector<T>& frames, int k) {
+  if (k < 1 || frames.empty())
+    throw std::invalid_argument("--frames " + std::to_string(k) + ": give at least 1, and a frame");
+  const std::size_t n = frames.size();
+  frames.resize(static_cast<std::size_t>(k), frames.front());
+  for (std::size_t i = n; i < frames.size(); ++i) frames[i] = frames[i % n];
+}
+
+/// Maps of the user's cropped alike: the crop `roi` (empty: the first map's whole size) of each
+/// 16-bit Q11.4 map (host::io::read_disparity_q4), in order, and `roi` set to the crop used.
+/// `what` names the command in errors. Throws std::invalid_argument naming the map a crop does
+/// not lie inside, and std::runtime_error for a file that is not a 16-bit map.
+std::vector<cv::Mat> crop_maps(const std::vector<std::filesystem::path>& maps, cv::Rect& roi,
+                               const std::string& what);
+/// "x X y Y WxH": a crop for the descriptions.
+std::string crop_text(const cv::Rect& roi);
 
 /// Layout description of a pixel beat `{eol, sof, px[P-1], ..., px[0]}` for add_hex().
 nlohmann::json pixel_beat_layout(int pixels_per_beat, int pixel_bits);

@@ -202,3 +202,31 @@ set_tests_properties("vectors:scw vectors rectify makes a two-frame set from a u
                      PROPERTIES FIXTURES_SETUP scw_user_rectify2_set)
 scw_replay_user_set(user_rectify2 scw_user_rectify2_set
                     "the two-frame rectify set from a user's raw pairs replays")
+
+# A road set from a user's maps at a pipeline build: the committed small_street pair (its three
+# frames one under another) matched by scw disparity, its bottom 64 x 32 four times back to back
+# through the small build's road stage at P = 1 on a rig of one's own; verified and replayed.
+set(_street "${PROJECT_SOURCE_DIR}/vectors/pipeline/small_street")
+add_test(NAME "vectors:scw vectors road makes a set from a user's maps at the small build"
+         COMMAND bash -c "rm -rf user_road && '$<TARGET_FILE:scw>' disparity \
+                          --left '${_street}/left.png' --right '${_street}/right.png' --window 9 \
+                          --min-disp 0 --max-disp 15 --out user_road8.png --out16 user_road16.png && \
+                          '$<TARGET_FILE:scw>' vectors road --config small --ppc 1 \
+                          --disparity user_road16.png user_road16.png user_road16.png user_road16.png \
+                          --roi 0 64 64 32 --focal 100 --baseline 0.2 --cy 79.5 --camera-height 1.2 \
+                          --out user_road && '$<TARGET_FILE:scw>' vectors verify user_road"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("vectors:scw vectors road makes a set from a user's maps at the small build"
+                     PROPERTIES FIXTURES_SETUP scw_user_road_set)
+scw_replay_user_set(user_road scw_user_road_set "the road set from a user's maps replays")
+
+# --frames K: a preset's one frame sent twice back to back (the stage from reset, then again
+# with its state from the first frame), verified and replayed in both simulators.
+add_test(NAME "vectors:scw vectors rectify --frames 2 repeats the shift preset"
+         COMMAND bash -c "rm -rf frames_shift && '$<TARGET_FILE:scw>' vectors rectify \
+                          --preset shift --frames 2 --out frames_shift && \
+                          '$<TARGET_FILE:scw>' vectors verify frames_shift"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("vectors:scw vectors rectify --frames 2 repeats the shift preset"
+                     PROPERTIES FIXTURES_SETUP scw_frames_shift_set)
+scw_replay_user_set(frames_shift scw_frames_shift_set "the shift preset twice replays")
