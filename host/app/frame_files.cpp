@@ -36,7 +36,30 @@ void write_objects_csv(const fs::path& p, const FrameOutput& f) {
   if (!csv) throw std::runtime_error("cannot write '" + p.string() + "'");
 }
 
-void write_frame(const fs::path& dir, const std::string& prefix, const FrameOutput& f) {
+const char* pictures_name(Pictures p) {
+  switch (p) {
+    case Pictures::kNone:
+      return "none";
+    case Pictures::kOverlay:
+      return "overlay";
+    case Pictures::kAll:
+      break;
+  }
+  return "all";
+}
+
+Pictures pictures_from_name(const std::string& name) {
+  for (const Pictures p : {Pictures::kNone, Pictures::kOverlay, Pictures::kAll})
+    if (name == pictures_name(p)) return p;
+  throw std::invalid_argument("pictures '" + name + "': give none, overlay or all");
+}
+
+void write_frame(const fs::path& dir, const std::string& prefix, const FrameOutput& f,
+                 Pictures pictures) {
+  write_objects_csv(dir / (prefix + "objects.csv"), f);
+  if (pictures == Pictures::kNone) return;
+  write_image(dir / (prefix + "overlay.png"), f.overlay);
+  if (pictures == Pictures::kOverlay) return;
   write_image(dir / (prefix + "left_rect.png"), f.left);
   write_image(dir / (prefix + "right_rect.png"), f.right);
   // PNG has no signed 16-bit format (imwrite would write 8 bits): the Q11.4 codes go out as
@@ -47,9 +70,7 @@ void write_frame(const fs::path& dir, const std::string& prefix, const FrameOutp
   write_image(dir / (prefix + "disparity.png"), labelling::disparity_picture(q4));
   write_image(dir / (prefix + "labels.png"), f.segmentation.labels);
   write_image(dir / (prefix + "labels_color.png"), labelling::colour_labels(f.segmentation.labels));
-  write_image(dir / (prefix + "overlay.png"), f.overlay);
   write_image(dir / (prefix + "road.png"), road::road_picture(f.left, f.road_mask));
-  write_objects_csv(dir / (prefix + "objects.csv"), f);
 }
 
 }  // namespace scw::app

@@ -14,7 +14,16 @@ namespace scw::app {
 /// object. Throws std::runtime_error naming the file if it cannot be written.
 void write_objects_csv(const std::filesystem::path& p, const FrameOutput& f);
 
-/// Every picture of a frame and its objects.csv into `dir`, names prefixed with `prefix`.
-void write_frame(const std::filesystem::path& dir, const std::string& prefix, const FrameOutput& f);
+/// Which pictures a run writes for each frame (`scw run --pictures`): none, the overlay alone, or
+/// all of them (the rectified pair, the disparity in 8 and 16 bits, the labels, the overlay, the
+/// road). A frame's objects.csv and results.jsonl line are written whichever is chosen.
+enum class Pictures { kNone, kOverlay, kAll };
+/// "none", "overlay", "all"; pictures_from_name throws std::invalid_argument for another name.
+const char* pictures_name(Pictures p);
+Pictures pictures_from_name(const std::string& name);
+
+/// The chosen pictures of a frame and its objects.csv into `dir`, names prefixed with `prefix`.
+void write_frame(const std::filesystem::path& dir, const std::string& prefix, const FrameOutput& f,
+                 Pictures pictures = Pictures::kAll);
 
 }  // namespace scw::app

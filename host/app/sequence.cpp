@@ -19,14 +19,14 @@ std::string frame_note(const FrameOutput& f) {
 }
 
 void run_pairs(Runner& runner, const std::vector<PairFiles>& pairs, cv::Size size,
-               const fs::path& dir, const FrameDone& done) {
+               const fs::path& dir, const FrameDone& done, Pictures pictures) {
   fs::create_directories(dir);
   std::ofstream jsonl(dir / "results.jsonl");
   if (!jsonl) throw std::runtime_error("cannot write '" + (dir / "results.jsonl").string() + "'");
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const auto [l, r] = read_pair(pairs[i], size);
     const FrameOutput f = runner.process(l, r);
-    write_frame(dir, pairs.size() == 1 ? "" : frame_prefix(pairs[i].first), f);
+    write_frame(dir, pairs.size() == 1 ? "" : frame_prefix(pairs[i].first), f, pictures);
     const auto j = frame_json(static_cast<int>(i), f);
     jsonl << j.dump() << "\n";
     if (done) done(i, f, j);

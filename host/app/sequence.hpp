@@ -6,13 +6,13 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-#include <opencv2/core.hpp>
-
+#include "host/app/frame_files.hpp"
 #include "host/app/pair_files.hpp"
 #include "host/app/run.hpp"
 
@@ -26,9 +26,10 @@ using FrameDone = std::function<void(std::size_t, const FrameOutput&, const nloh
 std::string frame_note(const FrameOutput& f);
 
 /// Runs `pairs` (all of `size`) through `runner` in order, writing each frame's files
-/// (write_frame; prefixed by frame_prefix when there is more than one pair) and its line of
-/// results.jsonl into `dir`, which it creates.
+/// (write_frame with `pictures`; prefixed by frame_prefix when there is more than one pair) and
+/// its line of results.jsonl into `dir`, which it creates.
 void run_pairs(Runner& runner, const std::vector<PairFiles>& pairs, cv::Size size,
-               const std::filesystem::path& dir, const FrameDone& done);
+               const std::filesystem::path& dir, const FrameDone& done,
+               Pictures pictures = Pictures::kAll);
 
 }  // namespace scw::app

@@ -23,6 +23,7 @@ struct Options {
   std::string left, right, sequence, out_dir;
   app::CameraInput camera;
   std::string tiles, engine = "cpp", mode = disparity::mode_name(disparity::kDefaultMode);
+  std::string pictures = "all";
   app::RunOptions run;
 };
 
@@ -48,13 +49,21 @@ void run(Options& o) {
   app::Runner runner(o.run, std::move(camera.maps), std::move(engine));
 
   Progress progress(pairs.size());
-  app::run_pairs(runner, pairs, first.size(), o.out_dir,
-                 [&](std::size_t i, const app::FrameOutput& f, const nlohmann::json& j) {
-                   if (pairs.size() > 1) progress.show(i + 1, app::frame_note(f));
-                   else std::cout << j.dump() << "\n";
-                 });
+  app::run_pairs(
+      runner, pairs, first.size(), o.out_dir,
+      [&](std::size_t i, const app::FrameOutput& f, const nlohmann::json& j) {
+        if (pairs.size() > 1)
+          progress.show(i + 1, app::frame_note(f));
+        else
+          std::cout << j.dump() << "\n";
+      },
+      app::pictures_from_name(o.pictures));
   std::cout << "wrote " << pairs.size() << (pairs.size() == 1 ? " frame" : " frames") << " in "
-            << o.out_dir << " (overlay.png, disparity.png, labels_color.png, results.jsonl)\n";
+            << o.out_dir << " ("
+            << (o.pictures == "all"       ? "overlay.png, disparity.png, labels_color.png, "
+                : o.pictures == "overlay" ? "overlay.png, "
+                                          : "")
+            << "objects.csv, results.jsonl)\n";
 }
 
 }  // namespace
@@ -78,6 +87,11 @@ void add_run_command(CLI::App& app) {
       ->check(non_negative("px", "239.5"));
   cmd->add_option("--calib-unit-m", o->camera.calib_unit_m,
                   "Metres per calibration unit (e.g. the chessboard square), default 1")->capture_default_str();
+  cmd->add_option("--pictures", o->pictures,
+                  "Pictures a frame writes: all (the rectified pair, disparity, labels, overlay, "
+                  "road), overlay, or none (objects.csv and results.jsonl are always written)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "overlay", "all"}));
   cmd->add_option("--engine", o->engine,
                   "cpp: the stages' C++ models; rtl: every block Verilated (rectified pairs, a "
                   "built size: small up to 128 x 96, window 9, 16 disparities, 2x2 tiles)")

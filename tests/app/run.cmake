@@ -24,6 +24,19 @@ add_test(NAME "app:cli run writes every picture and a results line with the requ
                           flags; do grep -q \"\\\"$k\\\":\" cli_run/results.jsonl || \
                           { echo missing key $k; exit 1; }; done"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# --pictures none and overlay: the same results line, objects.csv always, only the pictures
+# chosen.
+add_test(NAME "app:cli run --pictures none and overlay write the same results and only the chosen pictures"
+         COMMAND bash -c "for p in none overlay; do rm -rf cli_run_$p && '$<TARGET_FILE:scw>' run \
+                          ${scw_tsu_run} --left '${scw_tsu}/scene1.row3.col3.ppm' \
+                          --right '${scw_tsu}/scene1.row3.col4.ppm' --pictures $p \
+                          --out-dir cli_run_$p >/dev/null || exit 1; \
+                          test -s cli_run_$p/objects.csv || exit 1; done && \
+                          test $(ls cli_run_none | grep -c png) -eq 0 && \
+                          test \"$(ls cli_run_overlay | grep png)\" = overlay.png && \
+                          cmp cli_run_none/results.jsonl cli_run_overlay/results.jsonl && \
+                          cmp cli_run_none/objects.csv cli_run_overlay/objects.csv"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 add_test(NAME "app:cli run on a sequence writes one line per pair and shows progress"
          COMMAND bash -c "rm -rf cli_seq cli_seq_out && mkdir cli_seq && for i in 0001 0002 0003; \
                           do cp '${scw_tsu}/scene1.row3.col3.ppm' cli_seq/\${i}_left.ppm && \
