@@ -26,17 +26,24 @@ disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const Dispar
               int limit = NumDisp) {
   const int built = candidates<NumDisp>(cfg);  // the first n of the built candidates
   const int n = limit < built ? limit : built;
-  int best = 0;
-  for (int d = 1; d < n; ++d)
-    if (sad[d] <= sad[best]) best = d;  // <=: the largest d wins ties, as in cv::StereoBM
-  const sad_t m = sad[best];
+  // The smallest SAD, then the largest d that has it (ties go to the larger d, as in
+  // cv::StereoBM); two passes, each a reduction a compiler vectorises.
+  sad_t m = sad[0];
+  for (int d = 1; d < n; ++d) m = sad[d] < m ? sad[d] : m;
+  int best = n > 1 ? n - 1 : 0;
+  while (sad[best] != m) --best;
   if (cfg.sad_limit > 0 && m > static_cast<sad_t>(cfg.sad_limit)) return invalid_code(cfg);
   if (cfg.texture_threshold > 0 && texture < static_cast<sad_t>(cfg.texture_threshold))
     return invalid_code(cfg);
   if (cfg.uniqueness_ratio > 0) {
+    // Rejected when a candidate other than the winner and its two neighbours is within the
+    // ratio: count all within it, then take the three out.
     const sad_t thresh = m + m * static_cast<sad_t>(cfg.uniqueness_ratio) / 100;
-    for (int d = 0; d < n; ++d)
-      if ((d < best - 1 || d > best + 1) && sad[d] <= thresh) return invalid_code(cfg);
+    int close = 0;
+    for (int d = 0; d < n; ++d) close += sad[d] <= thresh ? 1 : 0;
+    for (int d = best > 0 ? best - 1 : 0; d <= best + 1 && d < n; ++d)
+      close -= sad[d] <= thresh ? 1 : 0;
+    if (close > 0) return invalid_code(cfg);
   }
   const int d = cfg.dmin + best;
   if (!cfg.subpixel || best == 0 || best == n - 1) return static_cast<disp_t>(d * 16);
@@ -89,18 +96,36 @@ class DisparityCore {
     }
     for (int i = 0; i < P; ++i) {
       const int x = x0 + i;
-      for (int d = 0; d < nd_; ++d) {  // the hardware evaluates all ND; unused ones idle
-        const int xr = x - cfg_.dmin - d;
-        int c = 0;
-        if (xr >= 0) {
-          c = col_[d][x] + absdiff(left_[slot][x], right_[slot][xr]);
-          if (y >= N) c -= absdiff(left_[old_slot][x], right_[old_slot][xr]);
-          if (y == 0) c = absdiff(left_[slot][x], right_[slot][xr]);
-        }
-        col_[d][x] = static_cast<std::uint16_t>(c);
-        const sad_t leaving = x >= N ? col_[d][x - N] : 0;
-        win_[d] = (x == 0 ? 0 : win_[d]) + static_cast<sad_t>(c) - leaving;
+      // Candidates are kept in reverse order, k = nd_ - 1 - d, so that the right pixel candidate
+      // k reads, x - dmin - d = base + k, rises with k: every loop below is a forward straight
+      // line over k that a compiler vectorises (a reversed byte load is not, on baseline x86-64).
+      // The hardware holds each candidate's sums in registers of its own; the order is the
+      // model's. Candidates whose right pixel lies left of the image (k < first) sum to 0.
+      int inside = x - cfg_.dmin + 1;
+      inside = inside < 0 ? 0 : (inside > nd_ ? nd_ : inside);
+      const int first = nd_ - inside;
+      const int base = x - cfg_.dmin - nd_ + 1;
+      // __restrict: the 8-bit pixels could otherwise alias the sums (a char type aliases
+      // anything), and the loops would stay scalar.
+      std::uint16_t* __restrict col = col_[x].data();
+      const std::uint16_t* __restrict leaving = x >= N ? col_[x - N].data() : zeros_.data();
+      const int l_new = left_[slot][x], l_old = left_[old_slot][x];
+      const pixel_t* __restrict r_new = right_[slot].data();
+      const pixel_t* __restrict r_old = right_[old_slot].data();
+      for (int k = 0; k < first; ++k) col[k] = 0;
+      if (y == 0) {
+        for (int k = first; k < nd_; ++k)
+          col[k] = static_cast<std::uint16_t>(absdiff(l_new, r_new[base + k]));
+      } else if (y >= N) {
+        for (int k = first; k < nd_; ++k)
+          col[k] = static_cast<std::uint16_t>(col[k] + absdiff(l_new, r_new[base + k]) -
+                                              absdiff(l_old, r_old[base + k]));
+      } else {
+        for (int k = first; k < nd_; ++k)
+          col[k] = static_cast<std::uint16_t>(col[k] + absdiff(l_new, r_new[base + k]));
       }
+      if (x == 0) win_.fill(0);
+      for (int k = 0; k < nd_; ++k) win_[k] += static_cast<sad_t>(col[k]) - leaving[k];
       // Texture: the same column and window sums of |L - cap| (StereoBM's texture measure).
       int t = absdiff(left_[slot][x], cfg_.prefilter_cap);
       if (y > 0) t += tcol_[x];
@@ -111,7 +136,12 @@ class DisparityCore {
       if (u < 0 || v < R) continue;
       // All nd_ candidates inside the right image, or at least edge_min_ of them (the left edge).
       const int limit = edge_limit<ND>(cfg_, u, R);
-      emit(limit >= edge_min_ ? decide<ND>(win_, twin_, cfg_, limit) : invalid_code(cfg_));
+      if (limit < edge_min_) {
+        emit(invalid_code(cfg_));
+        continue;
+      }
+      for (int d = 0; d < nd_; ++d) sad_[d] = win_[nd_ - 1 - d];  // back to candidate order
+      emit(decide<ND>(sad_, twin_, cfg_, limit));
     }
   }
 
@@ -123,8 +153,12 @@ class DisparityCore {
   int edge_min_;  // the fewest a pixel is decided among, edge_min<ND>(cfg_)
   std::array<std::array<pixel_t, W>, N + 1> left_{};
   std::array<std::array<pixel_t, W>, N + 1> right_{};
-  std::array<std::array<std::uint16_t, W>, ND> col_{};  // Q16.0, at most N * 255
-  std::array<sad_t, ND> win_{};
+  // Column sums Q16.0 (at most N * 255), by column then candidate (k = nd_ - 1 - d): a pixel's
+  // candidates are adjacent in memory.
+  std::array<std::array<std::uint16_t, ND>, W> col_{};
+  static constexpr std::array<std::uint16_t, ND> zeros_{};  // the leaving column left of x = N
+  std::array<sad_t, ND> win_{};                             // window sums, by k
+  std::array<sad_t, ND> sad_{};                             // the same, by d, for decide()
   std::array<std::uint16_t, W> tcol_{};  // texture column sums, at most N * 255
   sad_t twin_ = 0;
 };
@@ -193,9 +227,13 @@ class Disparity {
 #pragma HLS INLINE
     // clang-format on
     Emit e;
-    ready_ += arriving_[0];  // results that left the pipeline at the last edge
-    for (int i = 0; i + 1 < kLatency; ++i) arriving_[i] = arriving_[i + 1];
-    arriving_[kLatency - 1] = 0;
+    // Results that left the pipeline at the last edge; their slot becomes the newest, for the
+    // results fed this clock (a ring of kLatency counters, the delay line's shift without
+    // moving them).
+    ready_ += arriving_[arrive_head_];
+    arriving_[arrive_head_] = 0;
+    arrive_new_ = arrive_head_;
+    arrive_head_ = arrive_head_ + 1 == kLatency ? 0 : arrive_head_ + 1;
     // Every decision of this clock sees the state before its edge, as registers do.
     const bool room = input_room();
     const bool feed_prefiltered = cfg_.prefilter && xs_l_.read_allowed() && core_room();
@@ -266,7 +304,7 @@ class Disparity {
     core_.step(core_x_ * P, core_y_, l, r, [this](disp_t v) {
       queue_[(head_ + count_) % kQueue] = v;
       ++count_;
-      ++arriving_[kLatency - 1];
+      ++arriving_[arrive_new_];
     });
     if (++core_x_ < cols()) return;
     core_x_ = 0;
@@ -314,7 +352,9 @@ class Disparity {
   int head_ = 0;
   int count_ = 0;  // results fed to the core and not yet read (the credits in use)
   int ready_ = 0;  // of those, the ones out of the pipeline
-  std::array<int, kLatency> arriving_{};  // [i]: results readable i + 1 clocks from now
+  // [(arrive_head_ + i) % kLatency]: results readable i + 1 clocks from now.
+  std::array<int, kLatency> arriving_{};
+  int arrive_head_ = 0, arrive_new_ = kLatency - 1;
   XSobel<Params> xs_l_, xs_r_;
   int in_x_ = 0, in_y_ = 0, core_x_ = 0, core_y_ = 0, out_x_ = 0, out_y_ = 0;
   unsigned frames_in_ = 0, frames_out_ = 0;

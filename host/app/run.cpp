@@ -8,9 +8,8 @@
 #include "host/app/track.hpp"
 #include "host/ground/run_model.hpp"
 #include "host/labelling/hu_moments.hpp"
-#include "host/reference/ground_ref.hpp"
 #include "host/labelling/picture.hpp"
-#include "host/rectify/run_model.hpp"
+#include "host/reference/ground_ref.hpp"
 #include "host/road/setup.hpp"
 #include "host/warning/overlay.hpp"
 #include "host/warning/run_model.hpp"
@@ -42,6 +41,10 @@ Runner::Runner(const RunOptions& options, std::optional<RectifyMaps> maps, Stage
     : opt_(options), maps_(std::move(maps)), engine_(std::move(engine)), app_(std::make_unique<AppLayer>(options, tracker_params(options))) {
   opt_.warning.d_limit_px = opt_.max_disp;
   host::warning::to_fixed(opt_.warning);  // fail early, naming the value
+  if (maps_ && !engine_) {
+    rect_left_ = std::make_unique<rectify::Rectifier>(maps_->left, maps_->lead_rows);
+    rect_right_ = std::make_unique<rectify::Rectifier>(maps_->right, maps_->lead_rows);
+  }
 }
 
 Runner::~Runner() = default;
@@ -138,8 +141,8 @@ FrameOutput Runner::process(const cv::Mat& left_grey, const cv::Mat& right_grey)
     out.road_mask = hw.road_mask;
     road = hw.road;
   } else if (maps_) {
-    out.left = rectify::rectify_image(left_grey, maps_->left, maps_->lead_rows);
-    out.right = rectify::rectify_image(right_grey, maps_->right, maps_->lead_rows);
+    out.left = (*rect_left_)(left_grey);
+    out.right = (*rect_right_)(right_grey);
   } else {
     out.left = left_grey;
     out.right = right_grey;

@@ -5,18 +5,18 @@
 
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
-#include <opencv2/core.hpp>
 
 #include "hls/labelling/labelling_params.hpp"
 #include "hls/warning/warning_params.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/rectify/fixed_map.hpp"
+#include "host/rectify/run_model.hpp"
 #include "host/road/run_model.hpp"
 #include "host/warning/setup.hpp"
 
@@ -126,6 +126,8 @@ class Runner {
                           const hls::road::Line& road);
   RunOptions opt_;
   std::optional<RectifyMaps> maps_;
+  // The C++ engine's rectifiers of raw pairs, one stage per camera for the whole sequence.
+  std::unique_ptr<rectify::Rectifier> rect_left_, rect_right_;
   StageEngine engine_;
   std::unique_ptr<AppLayer> app_;
   std::unique_ptr<road::RoadFilter> road_;  // the road stage's state from frame to frame

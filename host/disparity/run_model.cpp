@@ -26,12 +26,39 @@ static_assert(same(Windows{}, kHostWindows));
 
 using Runner = cv::Mat (*)(const cv::Mat&, const cv::Mat&, const DisparityConfig&);
 
+bool same(const DisparityConfig& a, const DisparityConfig& b) {
+  return a.width == b.width && a.height == b.height && a.dmin == b.dmin &&
+         a.num_disp == b.num_disp && a.prefilter == b.prefilter &&
+         a.prefilter_cap == b.prefilter_cap && a.sad_limit == b.sad_limit &&
+         a.texture_threshold == b.texture_threshold && a.uniqueness_ratio == b.uniqueness_ratio &&
+         a.subpixel == b.subpixel && a.opencv_invalid == b.opencv_invalid &&
+         a.edge_candidates == b.edge_candidates;
+}
+
 template <int N>
 cv::Mat run_built(const cv::Mat& left, const cv::Mat& right, const DisparityConfig& cfg) {
   using Params = hls::disparity::DisparityParams<1, kHostMaxWidthPx, N, kHostMaxNumDisp>;
+  using Model = sim::DisparityModel<Params>;
+  // One stage per thread and configuration takes a sequence's frames back to back, as the
+  // pipeline's does (every output pixel depends on its own frame only): its 0.6 MB of line
+  // buffers and sums are not allocated and cleared again for every frame. A frame that fails
+  // leaves no stage behind.
+  thread_local std::unique_ptr<Model> model;
+  thread_local DisparityConfig built{};
+  if (!model || !same(built, cfg)) {
+    model.reset();
+    model = std::make_unique<Model>(cfg);
+    built = cfg;
+  }
   const auto l = sim::frame_beats<1>(left.ptr<std::uint8_t>(), cfg.width, cfg.height);
   const auto r = sim::frame_beats<1>(right.ptr<std::uint8_t>(), cfg.width, cfg.height);
-  const auto beats = run_disparity_model<Params>(l, r, cfg);
+  std::vector<typename Params::disp_beat> beats;
+  try {
+    beats = run_disparity_frames(*model, l, r);
+  } catch (...) {
+    model.reset();
+    throw;
+  }
   cv::Mat out(cfg.height, cfg.width, CV_16SC1);
   auto* dst = out.ptr<std::uint16_t>();
   for (std::size_t i = 0; i < beats.size(); ++i) dst[i] = beats[i].px[0];

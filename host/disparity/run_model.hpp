@@ -60,6 +60,18 @@ cv::Mat disparity_image(const cv::Mat& left, const cv::Mat& right, int window_n,
 /// the cycles taken in `*cycles` if given; throws std::logic_error if the model stops or flags
 /// an error on a well-formed frame. The one loop behind disparity_image and
 /// `scw vectors disparity`.
+/// run_disparity_model on a stage that may have taken frames before (they leave it ready for
+/// the next, as in the pipeline).
+template <typename Params>
+std::vector<typename Params::disp_beat> run_disparity_frames(
+    sim::DisparityModel<Params>& model, const std::vector<typename Params::pixel_beat>& left,
+    const std::vector<typename Params::pixel_beat>& right, std::int64_t* cycles = nullptr) {
+  auto out = sim::drain_join(model, left, right, left.size(), cycles);
+  if (model.kernel().error())
+    throw std::logic_error("run_disparity_model: the stage flagged a frame error");
+  return out;
+}
+
 template <typename Params>
 std::vector<typename Params::disp_beat> run_disparity_model(
     const std::vector<typename Params::pixel_beat>& left,
@@ -69,10 +81,7 @@ std::vector<typename Params::disp_beat> run_disparity_model(
     throw std::logic_error("run_disparity_model: left and right have different beat counts");
   using Model = sim::DisparityModel<Params>;
   const auto model = std::make_unique<Model>(cfg);  // line buffers: keep them off the stack
-  auto out = sim::drain_join(*model, left, right, left.size(), cycles);
-  if (model->kernel().error())
-    throw std::logic_error("run_disparity_model: the stage flagged a frame error");
-  return out;
+  return run_disparity_frames(*model, left, right, cycles);
 }
 
 }  // namespace scw::disparity

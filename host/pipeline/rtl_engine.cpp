@@ -2,6 +2,7 @@
 // The Verilated pipeline behind `scw run --engine rtl` (host/pipeline/rtl_engine.hpp).
 #include "host/pipeline/rtl_engine.hpp"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,6 +34,18 @@ cv::Mat picture(const std::vector<Beat>& beats, int width, int height, int type)
           m.at<std::int16_t>(y, x + k) = static_cast<std::int16_t>(beats.at(i).px[k]);
       }
   return m;
+}
+
+/// Calls `f` on each link whose beats make a frame's outputs (the labelling's input is the
+/// road stage's output when there is no ground filter: it is called twice then).
+template <typename Chain, typename F>
+void for_each_recorded_link(Chain& c, F&& f) {
+  f(c.rect_left());
+  f(c.rect_right());
+  f(c.disparity());
+  f(c.road());
+  f(c.labelling_input());
+  f(c.objects());
 }
 
 template <typename Build, typename Rtl>
@@ -68,45 +81,52 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
   if (o.ground)
     setup.ground = scw::ground::default_ground_config(o.warning.baseline_m, o.camera_height_m);
   sim::check_setup<Build>(setup);
-  // A chain is built for every pair; the road stage's state goes from one to the next as the
-  // road it starts from (a fit of no pixels keeps it), the C++ road model giving the next one.
-  return [setup, width, height, line = setup.road.nominal](const cv::Mat& l,
-                                                           const cv::Mat& r) mutable {
+  // One chain for the whole sequence, built at the first pair: each pair is fed after the last
+  // one's result is out, so the road stage goes from frame to frame as it does on the board (each
+  // frame gated with the road fitted on the one before), and the C++ road model beside it, kept
+  // as long, checks it.
+  using Chain = sim::PipelineChain<Build, Rtl>;
+  struct State {
+    std::unique_ptr<Chain> chain;
+    std::unique_ptr<road::RoadFilter> road;
+    std::size_t frames = 0;
+  };
+  auto state = std::make_shared<State>();
+  return [setup, width, height, state](const cv::Mat& l, const cv::Mat& r) {
     constexpr int P = Build::kPpc;
-    auto frame_setup = setup;
-    frame_setup.road.nominal = line;
-    sim::PipelineChain<Build, Rtl> chain(frame_setup,
-                                         sim::PipelineEngines::all(sim::Engine::rtl),
-                                         frames_beats<P>({l}),
-                                         frames_beats<P>({r}));
-    chain.rect_left().record(true);
-    chain.rect_right().record(true);
-    chain.disparity().record(true);
-    chain.road().record(true);
-    chain.labelling_input().record(true);  // the disparity, after ground removal when on
-    chain.objects().record(true);
-    chain.run(1, 64 * static_cast<std::int64_t>(width) * height + 1000000);
+    State& st = *state;
+    if (!st.chain) {
+      st.chain = std::make_unique<Chain>(setup, sim::PipelineEngines::all(sim::Engine::rtl),
+                                         frames_beats<P>({l}), frames_beats<P>({r}));
+      for_each_recorded_link(*st.chain, [](auto& f) { f.record(true); });
+      st.road = std::make_unique<road::RoadFilter>(setup.road);
+    } else {
+      st.chain->feed(frames_beats<P>({l}), frames_beats<P>({r}));
+    }
+    Chain& chain = *st.chain;
+    chain.run(st.frames + 1, 64 * static_cast<std::int64_t>(width) * height + 1000000);
     app::StageOutputs s;
     s.left = picture(chain.rect_left().recorded(), width, height, CV_8U);
     s.right = picture(chain.rect_right().recorded(), width, height, CV_8U);
     s.disparity = picture(chain.labelling_input().recorded(), width, height, CV_16S);
-    road::RoadFilter road(frame_setup.road);
-    const cv::Mat filtered =
-        road.filter(picture(chain.disparity().recorded(), width, height, CV_16S));
+    const cv::Mat before = picture(chain.disparity().recorded(), width, height, CV_16S);
+    const cv::Mat filtered = st.road->filter(before);
     const cv::Mat road_out = picture(chain.road().recorded(), width, height, CV_16S);
     if (cv::countNonZero(filtered != road_out) != 0)
       throw std::logic_error("the engine's road stage differs from the C++ road model");
-    s.road_mask = road::removed_mask(picture(chain.disparity().recorded(), width, height, CV_16S),
-                                     road_out);
-    s.road = frame_setup.road.nominal;  // a fresh chain gates its one frame with it
-    line = road.next_road();
+    s.road_mask = road::removed_mask(before, road_out);
+    s.road = st.road->road();  // the road this frame was gated with
     for (const auto& w : chain.objects().recorded()) {
-      if (w.data.is_status) s.status = w.data.status;
-      else s.objects.push_back(w.data.object);
+      if (w.data.is_status)
+        s.status = w.data.status;
+      else
+        s.objects.push_back(w.data.object);
     }
-    const auto& res = chain.results().front().data;
+    const auto& res = chain.results().at(st.frames).data;
     s.result = res.frame;
     s.input_error = res.input_error_left || res.input_error_right;
+    for_each_recorded_link(chain, [](auto& f) { f.clear_recorded(); });
+    ++st.frames;
     return s;
   };
 }

@@ -13,43 +13,66 @@ namespace scw::rectify {
 
 namespace {
 using HostParams = hls::rectify::RectifyParams<1, 2048, 2048, kHostStageRows>;
-}  // namespace
 
-cv::Mat rectify_image(const cv::Mat& raw, const FixedMap& map, int lead_rows) {
+using Model = sim::RectifyModel<HostParams>;
+
+void check_image(const cv::Mat& raw, int width, int height) {
   if (raw.type() != CV_8UC1)
     throw std::invalid_argument("rectify_image: the raw image must be 8-bit grey (CV_8UC1)");
-  if (raw.cols != map.width || raw.rows != map.height)
-    throw std::invalid_argument(
-        "rectify_image: raw image is " + std::to_string(raw.cols) + "x" +
-        std::to_string(raw.rows) + " but the map is " + std::to_string(map.width) + "x" +
-        std::to_string(map.height) + "; rectify images of the calibration's size");
+  if (raw.cols != width || raw.rows != height)
+    throw std::invalid_argument("rectify_image: raw image is " + std::to_string(raw.cols) + "x" +
+                                std::to_string(raw.rows) + " but the map is " +
+                                std::to_string(width) + "x" + std::to_string(height) +
+                                "; rectify images of the calibration's size");
+}
+}  // namespace
+
+struct Rectifier::Stage {
+  int width = 0, height = 0;
+  std::unique_ptr<Model> model;  // line buffers: keep them off the stack
+  std::vector<Model::b_type> points;
+};
+
+Rectifier::Rectifier(const FixedMap& map, int lead_rows) : stage_(std::make_unique<Stage>()) {
   if (map.frac_bits != HostParams::kFracBits)
     throw std::invalid_argument("rectify_image: the map has " + std::to_string(map.frac_bits) +
                                 " fractional bits, the stage " +
                                 std::to_string(HostParams::kFracBits));
-  if (raw.cols > HostParams::kMaxWidthPx || raw.rows > HostParams::kMaxHeight || raw.cols < 4)
+  if (map.width > HostParams::kMaxWidthPx || map.height > HostParams::kMaxHeight || map.width < 4)
     throw std::invalid_argument("rectify_image: images must be 4 .. 2048 pixels wide and at most "
                                 "2048 rows high");
   plan_for_stage({row_window(map)}, HostParams::kRows, "rectify_image");
   if (lead_rows < 1 || lead_rows > HostParams::kRows - 1)
     throw std::invalid_argument("rectify_image: lead_rows must be 1 .. " +
                                 std::to_string(HostParams::kRows - 1));
+  stage_->width = map.width;
+  stage_->height = map.height;
+  stage_->model =
+      std::make_unique<Model>(hls::rectify::RectifyConfig{map.width, map.height, lead_rows});
+  stage_->points = sim::frame_beats_of<Model::b_type>(map.points.data(), map.width, map.height);
+}
 
+Rectifier::~Rectifier() = default;
+Rectifier::Rectifier(Rectifier&&) noexcept = default;
+Rectifier& Rectifier::operator=(Rectifier&&) noexcept = default;
+
+cv::Mat Rectifier::operator()(const cv::Mat& raw) {
+  const Stage& s = *stage_;
+  check_image(raw, s.width, s.height);
   const cv::Mat img = raw.isContinuous() ? raw : raw.clone();
-  using Model = sim::RectifyModel<HostParams>;
-  const auto model = std::make_unique<Model>(
-      hls::rectify::RectifyConfig{raw.cols, raw.rows, lead_rows});
   const auto pixels = sim::frame_beats<1>(img.ptr<std::uint8_t>(), img.cols, img.rows);
-  const auto points =
-      sim::frame_beats_of<Model::b_type>(map.points.data(), map.width, map.height);
-
-  const auto beats = sim::drain_join(*model, pixels, points, pixels.size());
+  const auto beats = sim::drain_join(*s.model, pixels, s.points, pixels.size());
   cv::Mat out(raw.rows, raw.cols, CV_8UC1);
   for (std::size_t n = 0; n < beats.size(); ++n) out.data[n] = beats[n].px[0];
-  if (model->kernel().error() != 0)
+  if (s.model->kernel().error() != 0)
     throw std::logic_error("rectify_image: the stage flagged error bits " +
-                           std::to_string(model->kernel().error()));
+                           std::to_string(s.model->kernel().error()));
   return out;
+}
+
+cv::Mat rectify_image(const cv::Mat& raw, const FixedMap& map, int lead_rows) {
+  check_image(raw, map.width, map.height);  // a wrong image is named before the map
+  return Rectifier(map, lead_rows)(raw);
 }
 
 }  // namespace scw::rectify

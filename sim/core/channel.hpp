@@ -91,6 +91,8 @@ class Fifo : public ChannelBase {
   /// stage's output); off by default.
   void record(bool on) { recording_ = on; }
   const std::vector<T>& recorded() const { return recorded_; }
+  /// Forgets what was recorded so far (a long run takes its pictures frame by frame).
+  void clear_recorded() { recorded_.clear(); }
   void pop() {
     if (!can_pop() || pending_pop_)
       throw std::logic_error("FIFO '" + name_ + "': pop of an empty FIFO (check can_pop)");

@@ -65,6 +65,16 @@ class Source : public Component {
   }
   void tick() override {}
   bool done() const { return next_ >= beats_.size(); }
+  /// Offers `more` after the beats it holds (the next frame of a sequence fed as it is read);
+  /// the beats already sent are dropped first when all are.
+  void append(std::vector<T> more) {
+    if (done()) {
+      beats_ = std::move(more);
+      next_ = 0;
+    } else {
+      beats_.insert(beats_.end(), more.begin(), more.end());
+    }
+  }
 
  private:
   Fifo<T>& out_;

@@ -20,10 +20,10 @@ class SlotRegister {
   static_assert(Latency >= 1, "a pipeline has at least its output register");
 
  public:
-  bool out_valid() const { return slots_[Latency - 1].has_value(); }
-  const T& out() const { return *slots_[Latency - 1]; }
+  bool out_valid() const { return slots_[last()].has_value(); }
+  const T& out() const { return *slots_[last()]; }
   /// The first slot, for models whose input side looks into the pipeline (rectify's writer).
-  const std::optional<T>& first() const { return slots_[0]; }
+  const std::optional<T>& first() const { return slots_[first_]; }
 
   /// The pipeline's enable: its last slot is empty or read this cycle.
   bool enable(bool out_ready) const { return !out_valid() || out_ready; }
@@ -37,13 +37,18 @@ class SlotRegister {
   /// bubble. `make` is called only for a beat that enters, since it is the kernel's step.
   template <typename Make>
   void advance(bool valid, Make&& make) {
-    for (int i = Latency - 1; i > 0; --i) slots_[i] = slots_[i - 1];
-    slots_[0].reset();
-    if (valid) slots_[0] = make();
+    // A ring: the slots move on by moving where the first one is; the last slot's place, whose
+    // beat leaves, becomes the new first.
+    first_ = last();
+    slots_[first_].reset();
+    if (valid) slots_[first_] = make();
   }
 
  private:
+  int last() const { return first_ == 0 ? Latency - 1 : first_ - 1; }
+
   std::array<std::optional<T>, Latency> slots_{};
+  int first_ = 0;  // slot i is slots_[(first_ + i) % Latency]
 };
 
 /// A kernel's step() behind a SlotRegister of `Latency` stages: in_ready = !out_valid ||

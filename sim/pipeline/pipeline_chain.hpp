@@ -153,6 +153,12 @@ class PipelineChain {
         },
         max_cycles);
   }
+  /// Offers more raw frames after the ones given so far, both cameras' beats back to back (a
+  /// sequence read frame by frame through one chain).
+  void feed(std::vector<raw_beat> left, std::vector<raw_beat> right) {
+    src_l_->append(std::move(left));
+    src_r_->append(std::move(right));
+  }
   /// Frame period, latencies and busy times so far (sim/pipeline/pipeline_timing.hpp).
   PipelineTiming timing() const {
     return pipeline_timing(sim_.report(), *raw_l_, *raw_r_, *out_, start_);

@@ -39,7 +39,7 @@ class ResultMergeRtl : public RtlAdapter<VM> {
     m.right_valid_i = right_valid;
     m.right_error_i = right.data.error;
     m.out_ready_i = out_ready;
-    auto o = settle_out<Outputs>(m);
+    auto o = settle_out<Outputs>(this->harness());
     o.in_ready = m.res_ready_o;
     return o;
   }

@@ -43,7 +43,7 @@ class FrameCheckRtl : public RtlAdapter<VM> {
     VM& m = this->dut();
     drive_stage_in(m, in_valid, in, out_ready);
     m.flag_ready_i = flag_ready;
-    auto o = settle_out<FrameCheckOutputs<out_type>>(m);
+    auto o = settle_out<FrameCheckOutputs<out_type>>(this->harness());
     o.in_ready = m.in_ready_o != 0;
     o.flag_valid = m.flag_valid_o != 0;
     if (o.flag_valid) o.flag.error = m.flag_error_o != 0;

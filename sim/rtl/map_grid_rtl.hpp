@@ -45,7 +45,7 @@ class MapGridRtl : public RtlAdapter<VM> {
     VM& m = this->dut();
     m.run_i = run;
     m.out_ready_i = out_ready;
-    auto o = settle_out<StreamOutputs<out_type>>(m);
+    auto o = settle_out<StreamOutputs<out_type>>(this->harness());
     o.in_ready = !o.out_valid || out_ready;  // the pipeline enable; a beat issues if run
     return o;
   }

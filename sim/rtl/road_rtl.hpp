@@ -76,7 +76,7 @@ class RoadSideRtl : public RtlAdapter<VM> {
     VM& m = this->dut();
     drive_stage_in(m, in_valid, in, out_ready);
     m.line_ready_i = line_ready;
-    auto o = settle_out<SideOutputs<out_type, side_type>>(m);
+    auto o = settle_out<SideOutputs<out_type, side_type>>(this->harness());
     o.in_ready = m.in_ready_o != 0;
     o.flag_valid = m.line_valid_o != 0;
     if (o.flag_valid) {

@@ -97,8 +97,9 @@ void drive_stage_in(VM& m, bool in_valid, const In& in, bool out_ready) {
 /// (StreamOutputs, JoinOutputs, SideOutputs...); the caller adds the ready outputs. The beat is
 /// read only while out_valid, as the C++ models leave it default otherwise.
 template <typename Outputs, typename VM>
-Outputs settle_out(VM& m) {
-  m.eval();
+Outputs settle_out(Harness<VM>& h) {
+  h.eval();
+  const VM& m = h.dut();
   Outputs o;
   o.out_valid = m.out_valid_o != 0;
   if (o.out_valid) o.out = read_stage_out<decltype(o.out)>(m);

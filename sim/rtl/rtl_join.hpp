@@ -38,7 +38,7 @@ class RtlJoin : public RtlAdapter<VM> {
     Ports::a::drive(m, a_valid, a);
     Ports::b::drive(m, b_valid, b);
     m.out_ready_i = out_ready;
-    auto o = settle_out<JoinOutputs<Out>>(m);
+    auto o = settle_out<JoinOutputs<Out>>(this->harness());
     o.a_ready = Ports::a::ready(m);
     o.b_ready = Ports::b::ready(m);
     return o;

@@ -28,7 +28,7 @@ class RtlStream : public RtlAdapter<VM> {
   StreamOutputs<Out> eval(bool in_valid, const In& in, bool out_ready) {
     VM& m = this->dut();
     drive_stage_in(m, in_valid, in, out_ready);
-    auto o = settle_out<StreamOutputs<Out>>(m);
+    auto o = settle_out<StreamOutputs<Out>>(this->harness());
     o.in_ready = m.in_ready_o;
     return o;
   }

@@ -118,30 +118,56 @@ class Harness {
   VM& dut() { return *dut_; }
   std::uint64_t cycles() const { return cycles_; }
 
-  /// Settles combinational logic after inputs change (no clock edge).
-  void eval() { dut_->eval(); }
+  /// Settles combinational logic after inputs change (no clock edge; after tick(), the falling
+  /// edge too).
+  void eval() {
+    dut_->eval();
+    low_seen_ = true;
+  }
   /// Holds rst_ni low for `cycles` clock cycles (the RTL resets synchronously, on these edges).
   void reset(int cycles = 2) {
     dut_->rst_ni = 0;
     for (int i = 0; i < cycles; ++i) tick();
     dut_->rst_ni = 1;
-    dut_->eval();
+    eval();
   }
   /// One clock cycle: rising edge with the current inputs, then the falling edge.
+  ///
+  /// Traced, each half is evaluated and dumped. Untraced, the falling edge is left to the next
+  /// eval() (no RTL of the project acts on a falling clock edge, and outputs depend only on state
+  /// and inputs, so they read the same), and the eval before the rising edge is made only when
+  /// none was made since the last edge: Verilator must see the clock low once between two
+  /// rising edges, and it settles the logic fed by inputs changed since (its `ico` phase) before
+  /// it fires the edge in the same eval(). The adapters settle every cycle (harness eval()) to
+  /// read their outputs, so they pay one eval() a cycle here instead of three
+  /// (docs/performance.md, "Simulation speed").
   void tick() {
-    dut_->eval();
-    dump();
-    dut_->clk_i = 1;
-    dut_->eval();
-    ctx_->timeInc(1);
-    dump();
-    dut_->clk_i = 0;
-    dut_->eval();
-    ctx_->timeInc(1);
+    if (tracing()) {
+      dut_->eval();
+      dump();
+      dut_->clk_i = 1;
+      dut_->eval();
+      ctx_->timeInc(1);
+      dump();
+      dut_->clk_i = 0;
+      dut_->eval();
+      ctx_->timeInc(1);
+    } else {
+      if (!low_seen_) dut_->eval();
+      dut_->clk_i = 1;
+      dut_->eval();
+      dut_->clk_i = 0;
+      low_seen_ = false;
+      ctx_->timeInc(2);
+    }
     ++cycles_;
   }
 
  private:
+  bool tracing() const {
+    if constexpr (kTraced) return trace_ != nullptr;
+    return false;
+  }
   void dump() {
     if constexpr (kTraced) {
       if (trace_ && window_.holds(cycles_)) trace_->dump(ctx_->time());
@@ -155,6 +181,7 @@ class Harness {
   std::conditional_t<kTraced, std::unique_ptr<VerilatedFstC>, std::unique_ptr<int>> trace_;
   TraceWindow window_;
   std::uint64_t cycles_ = 0;
+  bool low_seen_ = true;  // an eval() saw the clock low since the last rising edge
 };
 
 }  // namespace scw::sim

@@ -2,12 +2,13 @@
 // A packed bit vector of any width: the RTL word of a beat, a Verilator port, a hex line.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
-#include <algorithm>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace scw::sim {
@@ -16,33 +17,48 @@ namespace scw::sim {
 class Bits {
  public:
   Bits() = default;
-  explicit Bits(int width) : width_(width), words_(static_cast<std::size_t>((width + 31) / 32)) {}
+  explicit Bits(int width) : width_(width), n_((width + 31) / 32) {
+    if (n_ > kInline) big_.assign(static_cast<std::size_t>(n_), 0u);
+  }
 
   int width() const { return width_; }
 
-  /// Writes `n` (<= 64) bits of `value` at bit `lsb`.
+  /// Writes `n` (<= 64) bits of `value` at bit `lsb`, a 32-bit word at a time (a field spans at
+  /// most three): every beat of a Verilated port goes through here each clock.
   void set(int lsb, int n, std::uint64_t value) {
     check_range(lsb, n);
-    for (int i = 0; i < n; ++i) {
-      const int b = lsb + i;
-      const std::uint32_t mask = 1u << (b % 32);
-      auto& w = words_[static_cast<std::size_t>(b / 32)];
-      w = ((value >> i) & 1u) ? (w | mask) : (w & ~mask);
+    std::uint32_t* w = data();
+    for (int b = lsb, left = n; left > 0;) {
+      const int off = b % 32, take = std::min(left, 32 - off);
+      const std::uint32_t mask = (take == 32 ? ~0u : (1u << take) - 1u) << off;
+      auto& word = w[b / 32];
+      word = (word & ~mask) | ((static_cast<std::uint32_t>(value) << off) & mask);
+      value >>= take;
+      b += take;
+      left -= take;
     }
   }
   /// Reads `n` (<= 64) bits at bit `lsb`.
   std::uint64_t get(int lsb, int n) const {
     check_range(lsb, n);
+    const std::uint32_t* w = data();
     std::uint64_t v = 0;
-    for (int i = 0; i < n; ++i) {
-      const int b = lsb + i;
-      v |= static_cast<std::uint64_t>((words_[static_cast<std::size_t>(b / 32)] >> (b % 32)) & 1u)
-           << i;
+    for (int b = lsb, done = 0; done < n;) {
+      const int off = b % 32, take = std::min(n - done, 32 - off);
+      const std::uint32_t mask = take == 32 ? ~0u : (1u << take) - 1u;
+      v |= static_cast<std::uint64_t>((w[b / 32] >> off) & mask) << done;
+      b += take;
+      done += take;
     }
     return v;
   }
-  std::uint32_t word(std::size_t i) const { return words_.at(i); }
-  std::size_t num_words() const { return words_.size(); }
+  std::uint32_t word(std::size_t i) const {
+    if (i >= static_cast<std::size_t>(n_))
+      throw std::out_of_range("word " + std::to_string(i) + " of a " + std::to_string(width_) +
+                              "-bit word");
+    return data()[i];
+  }
+  std::size_t num_words() const { return static_cast<std::size_t>(n_); }
 
   /// Most significant digit first, ceil(width/4) digits: one `$readmemh` line.
   std::string hex() const {
@@ -79,7 +95,7 @@ class Bits {
   }
 
   friend bool operator==(const Bits& a, const Bits& b) {
-    return a.width_ == b.width_ && a.words_ == b.words_;
+    return a.width_ == b.width_ && std::equal(a.data(), a.data() + a.n_, b.data());
   }
   friend bool operator!=(const Bits& a, const Bits& b) { return !(a == b); }
 
@@ -91,7 +107,9 @@ class Bits {
       port = static_cast<Port>(width_ > 0 ? get(0, std::min(width_, 64)) : 0);
     } else {
       constexpr std::size_t n = sizeof(port.m_storage) / sizeof(port.m_storage[0]);
-      for (std::size_t i = 0; i < n; ++i) port.m_storage[i] = i < words_.size() ? words_[i] : 0;
+      const std::uint32_t* w = data();
+      for (std::size_t i = 0; i < n; ++i)
+        port.m_storage[i] = i < static_cast<std::size_t>(n_) ? w[i] : 0;
     }
   }
   template <typename Port>
@@ -101,7 +119,9 @@ class Bits {
       b.set(0, std::min(width, 64), static_cast<std::uint64_t>(port));
     } else {
       constexpr std::size_t n = sizeof(port.m_storage) / sizeof(port.m_storage[0]);
-      for (std::size_t i = 0; i < b.words_.size() && i < n; ++i) b.words_[i] = port.m_storage[i];
+      std::uint32_t* w = b.data();
+      for (std::size_t i = 0; i < static_cast<std::size_t>(b.n_) && i < n; ++i)
+        w[i] = port.m_storage[i];
       b.mask_top();
     }
     return b;
@@ -114,11 +134,18 @@ class Bits {
                               "] outside a " + std::to_string(width_) + "-bit word");
   }
   void mask_top() {
-    if (width_ % 32 != 0 && !words_.empty()) words_.back() &= (1u << (width_ % 32)) - 1u;
+    if (width_ % 32 != 0 && n_ > 0) data()[n_ - 1] &= (1u << (width_ % 32)) - 1u;
   }
+  std::uint32_t* data() { return n_ > kInline ? big_.data() : small_.data(); }
+  const std::uint32_t* data() const { return n_ > kInline ? big_.data() : small_.data(); }
 
+  // Words up to kInline live in the object, so the beats of every port but the widest (the
+  // labelling word) are packed each clock without a heap allocation.
+  static constexpr int kInline = 8;
   int width_ = 0;
-  std::vector<std::uint32_t> words_;
+  int n_ = 0;  // 32-bit words
+  std::array<std::uint32_t, kInline> small_{};
+  std::vector<std::uint32_t> big_;
 };
 
 }  // namespace scw::sim

@@ -237,3 +237,26 @@ TEST_CASE("disparity_image refuses what the built stages cannot do, saying what 
   CHECK_THROWS_WITH(disparity::disparity_image(a, b, 5, 0, 15, bad_cap),
                     Contains("prefilter cap must be 1 .. 63"));
 }
+
+TEST_CASE("disparity_image over a sequence equals the direct reference frame by frame",
+          "[disparity][host]") {
+  // disparity_image keeps its stage for the next frame of the same configuration: the second
+  // and later frames start from the state the one before left, and must not depend on it.
+  const Tsukuba& t = tsukuba();
+  const auto cfg = disparity::mode_config(disparity::Mode::opencv, 0, 0, 0);
+  cv::Mat flipped_l, flipped_r;  // another scene of the same size: the pair mirrored and swapped
+  cv::flip(t.right, flipped_l, 1);
+  cv::flip(t.left, flipped_r, 1);
+  const std::vector<std::pair<cv::Mat, cv::Mat>> frames = {
+      {t.left, t.right}, {flipped_l, flipped_r}, {t.left, t.right}};
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    INFO("frame " << i);
+    const cv::Mat l = frames[i].first.clone(), r = frames[i].second.clone();
+    DisparityConfig full = cfg;
+    full.width = l.cols;
+    full.height = l.rows;
+    const auto want = reference::disparity_reference(l.ptr<std::uint8_t>(), r.ptr<std::uint8_t>(),
+                                                     l.cols, l.rows, 9, 16, full);
+    CHECK(values(disparity::disparity_image(l, r, 9, 0, 15, cfg)) == want);
+  }
+}

@@ -111,7 +111,7 @@ TEST_CASE("run --ground with the Verilated stages equals the C++ models on a roa
   CHECK(removed > 1000);
 }
 
-TEST_CASE("the road stage over a sequence: the Verilated chain per pair equals the C++ models",
+TEST_CASE("the road stage over a sequence: one Verilated chain for all pairs equals the C++ models",
           "[pipeline][app][rtl][road]") {
   // The nominal road's horizon is the principal point's row, 47.5; the road's is 30, within the
   // 3 degrees of pitch a fit may move it: from the second frame on the road is found and removed.

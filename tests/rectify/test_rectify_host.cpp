@@ -394,3 +394,20 @@ TEST_CASE("quantisation clamps positions outside the image", "[rectify][host]") 
   CHECK(m.at(2, 0) == MapPoint{48, -32});         // cvRound(-31.97) = -32
   CHECK(m.at(3, 0).x == -32);
 }
+
+TEST_CASE("a Rectifier over a sequence equals rectify_image frame by frame", "[rectify][host]") {
+  // `scw run` keeps one stage per camera for a whole sequence: each frame must come out as a
+  // fresh stage makes it, whatever the rows the frame before left in the line buffer.
+  const auto& cb = chessboard();
+  Rectifier left(cb.left, cb.plan.lead_rows);
+  int frames = 0;
+  for (int i : {1, 5, 9, 1}) {
+    const cv::Mat l = read_grey(image_path("left", i));
+    const cv::Mat fresh = rectify_image(l, cb.left, cb.plan.lead_rows);
+    CHECK(cv::countNonZero(left(l) != fresh) == 0);
+    ++frames;
+  }
+  CHECK(frames == 4);
+  CHECK_THROWS_WITH(left(cv::Mat(10, 10, CV_8UC1)),
+                    Catch::Contains("rectify images of the calibration's size"));
+}

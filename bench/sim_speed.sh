@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Simulation speed of the whole pipeline at the thesis configuration, side by side in one run:
+# `scw sim --config thesis --frames F` on the C++ models and on every block Verilated, at each
+# beat width P the build has (the RTL needs a build configured with -DSCW_THESIS_RTL=ON
+# -DSCW_THESIS_RTL_PPC="1;2;4"), interleaved run by run; prints each run, then the medians in
+# cycles per second and seconds per frame (docs/performance.md, "Simulation speed"):
+#   bench/sim_speed.sh BUILD_DIR [FRAMES] [REPEATS] [BASELINE_BUILD_DIR]
+# With BASELINE_BUILD_DIR (another build of scw, e.g. an older revision) its RTL runs are timed in
+# the same loop, so the two are compared on the same machine at the same moment.
+set -euo pipefail
+build="$(cd "${1:?usage: sim_speed.sh BUILD_DIR [FRAMES] [REPEATS] [BASELINE_BUILD_DIR]}" && pwd)"
+frames="${2:-3}"
+repeats="${3:-3}"
+base="${4:-}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+scw="$build/host/cli/scw"
+[ -x "$scw" ] || { echo "sim_speed.sh: no $scw; build scw first" >&2; exit 2; }
+if [ -n "$base" ]; then
+  base="$(cd "$base" && pwd)/host/cli/scw"
+  [ -x "$base" ] || { echo "sim_speed.sh: no $base" >&2; exit 2; }
+fi
+
+# The widths the RTL is built at: `scw sim --engine rtl` refuses the others, naming the option.
+rtl_widths=()
+for p in 1 2 4; do
+  if "$scw" sim --config thesis --ppc "$p" --frames 1 --engine rtl --json "$work/probe.json" \
+    >/dev/null 2>&1; then rtl_widths+=("$p"); fi
+done
+[ ${#rtl_widths[@]} -gt 0 ] || echo "sim_speed.sh: this scw has no thesis-size RTL; C++ only" >&2
+
+runs=()
+for p in 1 2 4; do runs+=("cpp $p $scw"); done
+for p in "${rtl_widths[@]}"; do
+  runs+=("rtl $p $scw")
+  [ -z "$base" ] || runs+=("rtl $p $base")
+done
+
+declare -A secs cycles
+for ((r = 1; r <= repeats; r++)); do
+  for run in "${runs[@]}"; do
+    read -r engine p bin <<<"$run"
+    key="$engine $p $([ "$bin" = "$scw" ] && echo this || echo baseline)"
+    t0="$(date +%s.%N)"
+    "$bin" sim --config thesis --ppc "$p" --frames "$frames" --engine "$engine" \
+      --json "$work/run.json" >/dev/null
+    t1="$(date +%s.%N)"
+    s="$(awk -v a="$t0" -v b="$t1" 'BEGIN {print b - a}')"
+    secs[$key]+="$s "
+    cycles[$key]="$(grep -o '"cycles":[0-9]*' "$work/run.json" | head -1 | cut -d: -f2)"
+    printf 'run %d  %-22s %8.2f s\n' "$r" "$key" "$s"
+  done
+done
+
+median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
+printf '\nthesis configuration, %d frames a run, median of %d runs:\n' "$frames" "$repeats"
+printf '  %-22s %10s %12s %12s %10s\n' "engine P build" "cycles" "s a run" "cycles/s" "s a frame"
+for run in "${runs[@]}"; do
+  read -r engine p bin <<<"$run"
+  key="$engine $p $([ "$bin" = "$scw" ] && echo this || echo baseline)"
+  m="$(echo "${secs[$key]}" | median)"
+  printf '  %-22s %10d %12.2f %12.0f %10.3f\n' "$key" "${cycles[$key]}" "$m" \
+    "$(awk -v c="${cycles[$key]}" -v m="$m" 'BEGIN {print c / m}')" \
+    "$(awk -v m="$m" -v f="$frames" 'BEGIN {print m / f}')"
+done
