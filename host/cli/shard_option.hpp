@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: Apache-2.0
+// `--shard I/N` for the commands that split a long run over processes or machines, and the
+// manifest each shard writes for `scw merge` (docs/slurm.md).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstddef>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "host/app/shard.hpp"
+
+namespace scw::cli {
+
+/// Adds --shard to `cmd`, kept as given in `text` (empty: the whole run, no manifest).
+inline CLI::Option* add_shard_option(CLI::App* cmd, std::string& text, const std::string& items) {
+  return cmd
+      ->add_option("--shard", text,
+                   "Run only block I of N of the " + items +
+                       " (I 0-based, e.g. $SLURM_ARRAY_TASK_ID/4) and write shard.json for scw "
+                       "merge (docs/slurm.md)")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            try {
+              app::parse_shard(s);
+              return std::string();
+            } catch (const std::invalid_argument& e) {
+              return std::string(e.what());
+            }
+          },
+          "I/N", "shard"));
+}
+
+/// The shard `text` names ({0, 1} when empty).
+inline app::Shard shard_of(const std::string& text) {
+  return text.empty() ? app::Shard{} : app::parse_shard(text);
+}
+
+/// Every option given to `cmd`, as CLI11 writes them, but --shard and the `leave_out` ones (the
+/// output folder): what must be equal for shards to be one run.
+inline std::string shard_settings(const CLI::App& cmd, const std::vector<std::string>& leave_out) {
+  std::istringstream all(cmd.config_to_str(false, false));
+  std::string settings, line;
+  while (std::getline(all, line)) {
+    bool keep = line.rfind("shard=", 0) != 0;
+    for (const auto& name : leave_out) keep = keep && line.rfind(name + "=", 0) != 0;
+    if (keep) settings += line + "\n";
+  }
+  return settings;
+}
+
+/// Writes `dir`/shard.json when --shard was given (`m.shard` set from it, `m.settings` from
+/// `cmd`'s options but `leave_out`).
+inline void write_manifest_if_sharded(const std::string& shard_text, const CLI::App& cmd,
+                                      const std::vector<std::string>& leave_out,
+                                      app::ShardManifest m, const std::filesystem::path& dir) {
+  if (shard_text.empty()) return;
+  m.command = cmd.get_name();
+  m.shard = app::parse_shard(shard_text);
+  m.range = app::shard_range(m.shard, m.total);
+  m.settings = shard_settings(cmd, leave_out);
+  app::write_shard_manifest(dir, m);
+}
+
+}  // namespace scw::cli
