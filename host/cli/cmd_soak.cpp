@@ -10,6 +10,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/io/image_file.hpp"
 #include "host/soak/reset_trials.hpp"
@@ -133,6 +134,7 @@ void add_soak_command(CLI::App& app) {
   cmd->add_option("--inject-divergence", s.inject_divergence,
                   "flip a bit of the RTL's result K, to see the checker report it (and trace it)");
   cmd->add_option("--json", o->json, "write the summary as JSON");
+  add_refused_shard_option(cmd, kSoakNoShard);
   cmd->callback([o] {
     bool ok = false;
     try {

@@ -10,3 +10,15 @@ scw_discover_tests(test_shard TEST_PREFIX "app:")
 add_test(NAME "app:cli run in 3 shards merged equals one process byte for byte"
          COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/app/shard_run.sh" "$<TARGET_FILE:scw>"
                  "${CMAKE_CURRENT_BINARY_DIR}/cli_shard_run")
+# The commands whose output does not split into shards that join into one process's refuse
+# --shard with the reason (docs/slurm.md, "What does not split").
+add_test(NAME "app:cli sim, soak and vectors refuse --shard and say why"
+         COMMAND bash -c "for c in 'sim|whole-run timing' 'soak|different seeds' \
+                          'vectors rectify|one stream' 'vectors disparity|one stream' \
+                          'vectors labelling|one stream' 'vectors road|one stream' \
+                          'vectors warning|one stream' 'vectors pipeline|one stream'; do \
+                          if '$<TARGET_FILE:scw>' \${c%|*} --shard 0/2 2> shard_refused.err; then \
+                          echo \"\${c%|*} took --shard\"; exit 1; fi; \
+                          grep -q -- \"--shard: 0/2 refused: .*\${c#*|}\" shard_refused.err || \
+                          { echo \"\${c%|*}:\"; cat shard_refused.err; exit 1; }; done"
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
