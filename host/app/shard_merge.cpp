@@ -112,7 +112,7 @@ MergeReport merge_shards(const std::vector<fs::path>& dirs, const fs::path& out)
                                std::to_string(m.shard.index) + "'s folder: merge into another");
   fs::create_directories(out);
   const auto& joined = shards.front().second.concatenate;
-  MergeReport report{shards.size(), shards.front().second.total, 0};
+  MergeReport report{shards.size(), shards.front().second.total, 0, shards.front().second.unit};
   std::map<fs::path, fs::path> copied_from;
   for (std::size_t k = 0; k < shards.size(); ++k) {
     const auto& d = shards[k].first;

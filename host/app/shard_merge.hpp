@@ -6,12 +6,14 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace scw::app {
 
 struct MergeReport {
   std::size_t shards = 0, items = 0, files = 0;
+  std::string unit;  // what the items are: frames, seeds
 };
 
 /// Joins `shards` (output folders, any order) into `out`: the files each manifest names for

@@ -41,10 +41,10 @@ inline const char* const kSimNoShard =
     "FIFOs' fill): a block of the frames is another run with other figures, and no merge of "
     "shards gives one process's. Run scw sim in one process (docs/slurm.md)";
 inline const char* const kSoakNoShard =
-    "scw soak is one stream: its frames back to back through one Verilated top under one seeded "
-    "stall pattern, cycles and the first divergence counted through it, so a block of its frames "
-    "is another soak. Spread soaks over machines as different seeds instead (a job array with "
-    "--seed $SLURM_ARRAY_TASK_ID, one summary each; docs/slurm.md)";
+    "--shard without --seeds: a soak is one stream, its frames back to back through one Verilated "
+    "top under one seeded stall pattern, cycles and the first divergence counted through it, so a "
+    "block of its frames is another soak. Split seeds instead: --seeds K --out-dir DIR --shard I/N "
+    "(docs/slurm.md)";
 inline const char* const kVectorsNoShard =
     "a vector set is one stream: each interface's file holds its K frames back to back (the road "
     "and pipeline sets also carry the road from frame to frame), and one manifest records the "
