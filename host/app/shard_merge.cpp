@@ -98,7 +98,8 @@ void append(const fs::path& from, const fs::path& to, bool first) {
   std::ifstream in(from, std::ios::binary);
   std::ofstream o(to,
                   first ? std::ios::binary | std::ios::trunc : std::ios::binary | std::ios::app);
-  o << in.rdbuf();
+  // An empty shard (no frames) appends nothing: inserting an empty buffer would set failbit.
+  if (in && in.peek() != std::ifstream::traits_type::eof()) o << in.rdbuf();
   if (!in || !o) throw std::runtime_error("cannot append " + quoted(from) + " to " + quoted(to));
 }
 

@@ -33,7 +33,7 @@ void add_merge_command(CLI::App& app) {
     const std::vector<std::filesystem::path> dirs(o->shards.begin(), o->shards.end());
     const auto r = app::merge_shards(dirs, o->out_dir);
     std::cout << "merged " << r.shards << (r.shards == 1 ? " shard" : " shards") << " (" << r.items
-              << " items, " << r.files << " files) into " << o->out_dir << "\n";
+              << " " << r.unit << ", " << r.files << " files) into " << o->out_dir << "\n";
   });
 }
 

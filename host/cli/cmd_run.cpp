@@ -54,6 +54,7 @@ void run(Options& o, const CLI::App& cmd) {
   const app::SequenceSplit split{shard_of(o.shard), o.segments};
   const std::size_t frames = app::plan_split(split, pairs.size()).range.size();
   Progress progress(frames);
+  remove_old_manifest(o.out_dir);
   app::run_pairs(
       make_runner, pairs, first.size(), o.out_dir,
       [&](std::size_t i, const app::FrameOutput& f, const nlohmann::json& j) {

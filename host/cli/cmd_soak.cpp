@@ -112,6 +112,7 @@ bool run_seeds(Options& o, const CLI::App& cmd) {
         "--seeds writes each seed's summary to DIR/seed_S.json: give "
         "--out-dir DIR and no --json");
   std::filesystem::create_directories(o.out_dir);
+  remove_old_manifest(o.out_dir);
   const std::uint64_t first = o.soak.seed;
   const auto seeds = app::shard_range(shard_of(o.shard), static_cast<std::size_t>(o.seeds));
   bool ok = true;

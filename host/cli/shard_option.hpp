@@ -77,6 +77,12 @@ inline std::string shard_settings(const CLI::App& cmd, const std::vector<std::st
   return settings;
 }
 
+/// Removes a shard.json an earlier run left in `dir`: a shard writes its own last, so one that
+/// stops half way leaves none and `scw merge` refuses the folder.
+inline void remove_old_manifest(const std::filesystem::path& dir) {
+  std::filesystem::remove(dir / "shard.json");
+}
+
 /// Writes `dir`/shard.json when --shard was given (`m.shard` set from it, `m.settings` from
 /// `cmd`'s options but `leave_out`).
 inline void write_manifest_if_sharded(const std::string& shard_text, const CLI::App& cmd,

@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 // The sharding rule (host/app/shard.hpp) and where a sharded sequence restarts its state
-// (host/app/sequence.hpp, plan_split): docs/slurm.md.
+// (host/app/sequence.hpp, plan_split), and the merge on hand-made shards
+// (host/app/shard_merge.hpp): docs/slurm.md.
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "host/app/sequence.hpp"
 #include "host/app/shard.hpp"
+#include "host/app/shard_merge.hpp"
 
 using scw::app::parse_shard;
 using scw::app::plan_split;
@@ -48,4 +54,30 @@ TEST_CASE("plan_split restarts a shard at its first frame and at the segments in
   const auto finer = plan_split({{1, 2}, 4}, 8);  // --shard 1/2 --segments 4
   CHECK(finer.restarts == std::vector<std::size_t>{4, 6});
   CHECK_THROWS_WITH(plan_split({{0, 3}, 4}, 7), Catch::Contains("give a multiple of N"));
+}
+
+TEST_CASE("merge_shards joins results in shard order, an empty shard's too", "[app]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "scw_test_merge_shards";
+  fs::remove_all(dir);
+  // 1 frame in 2 shards: shard 0 has none, shard 1 frame 0.
+  for (int i = 0; i < 2; ++i) {
+    const fs::path d = dir / std::to_string(i);
+    fs::create_directories(d);
+    std::ofstream(d / "results.jsonl") << (i == 1 ? "{\"frame\":0}\n" : "");
+    if (i == 1) std::ofstream(d / "0000_objects.csv") << "label\n";
+    scw::app::write_shard_manifest(
+        d, {"run", {i, 2}, shard_range({i, 2}, 1), 1, "frames", "x=1\n", {"results.jsonl"}});
+  }
+  const auto r = scw::app::merge_shards({dir / "1", dir / "0"}, dir / "merged");
+  CHECK(r.shards == 2);
+  CHECK(r.files == 2);
+  std::ifstream in(dir / "merged" / "results.jsonl");
+  const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(all == "{\"frame\":0}\n");
+  CHECK(fs::exists(dir / "merged" / "0000_objects.csv"));
+  CHECK_FALSE(fs::exists(dir / "merged" / "shard.json"));
+  CHECK_THROWS_WITH(scw::app::merge_shards({dir / "1"}, dir / "m2"),
+                    Catch::Contains("shard(s) 0 of 2 missing"));
+  fs::remove_all(dir);
 }

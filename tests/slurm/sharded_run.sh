@@ -17,6 +17,7 @@ cluster_start "$work/cluster"
 echo "cluster up in $((SECONDS - start)) s: $(sinfo -h -N -o '%N %T %c CPUs')"
 
 "$scw" scene --preset cyclist-crossing --frames 9 --out-dir seq >/dev/null 2>&1
+echo "scene made at $((SECONDS - start)) s"
 run=(run --calib seq/calibration.yml --sequence seq --min-disp 12 --max-disp 56 --window 21
      --tiles 8x4 --pictures overlay)
 jobs=$("$here/../../scripts/slurm_run.sh" -n 4 -o merged --scw "$scw" -- "${run[@]}")
@@ -38,6 +39,7 @@ fi
 echo "jobs done at $((SECONDS - start)) s: $(cat merged.shards/slurm-merge-*.out)"
 
 "$scw" "${run[@]}" --segments 4 --out-dir one >/dev/null 2>&1
+echo "one process done at $((SECONDS - start)) s"
 diff <(cd one && find . -type f | sort) <(cd merged && find . -type f | sort) ||
   { echo "FAIL: the merged folder holds other files than one process's"; exit 1; }
 files=0
