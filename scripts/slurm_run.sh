@@ -19,8 +19,8 @@ usage: $0 [-n N] -o DIR [--scw PATH] [--out-option OPT] [--sbatch ARG]... -- COM
   --scw PATH      the scw to run (default: this checkout's build/host/cli/scw, else scw on PATH)
   --out-option O  the option COMMAND takes its output folder with (default --out-dir)
   --sbatch ARG    passed to both sbatch calls (repeat it), e.g. --sbatch --partition=short
-  COMMAND ARGS    an scw command and its options, without --shard and the output folder:
-                  run ..., sim ..., soak ..., vectors STAGE ...
+  COMMAND ARGS    an scw command that takes --shard, and its options, without --shard and the
+                  output folder: run ... (frames) or soak --seeds K ... (seeds)
 USAGE
   exit 2
 }
@@ -40,7 +40,7 @@ while [ $# -gt 0 ]; do
     *) usage ;;
   esac
 done
-[ -n "$out" ] && [ $# -gt 0 ] || usage
+if [ -z "$out" ] || [ $# -eq 0 ]; then usage; fi
 [[ "$n" =~ ^[1-9][0-9]*$ ]] || { echo "$0: -n $n: give a whole number of shards, e.g. 4" >&2; exit 2; }
 [ -x "$scw" ] || { echo "$0: no scw found: build it (scripts/build.sh) or give --scw PATH" >&2; exit 2; }
 command -v sbatch >/dev/null || { echo "$0: sbatch not found: run this where Slurm's client commands are" >&2; exit 2; }
