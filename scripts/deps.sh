@@ -9,9 +9,12 @@ set -euo pipefail
 # catch2, libcli11-dev, nlohmann-json3-dev: tests, CLI, manifests; libssl-dev: SHA-256 of
 # golden vectors (OpenSSL's EVP, not a hand-written hash); git: cloning and CI; clang and its
 # runtime libraries (libFuzzer, AddressSanitizer; only recommended by clang, so named): fuzzing
-# the file parsers (scripts/fuzz.sh).
+# the file parsers (scripts/fuzz.sh); slurm-wlm (slurmctld, slurmd, the client commands) and
+# munge (its authentication): the test that starts a one-node Slurm cluster and runs a sharded
+# job through it (docs/slurm.md); parallel: GNU parallel, the one-workstation way to run shards.
 packages=(cmake g++ make ninja-build pkg-config git verilator zlib1g-dev yosys iverilog
-          libopencv-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libssl-dev clang libclang-rt-14-dev)
+          libopencv-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libssl-dev clang libclang-rt-14-dev
+          slurm-wlm munge parallel)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -7,3 +7,6 @@ target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/app/pair_files.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/app/sequence.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/app/camera.cpp
                                 ${CMAKE_CURRENT_SOURCE_DIR}/app/frame_files.cpp)
+# Splitting a run over processes or machines (--shard I/N) and joining the shards (scw merge).
+target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/app/shard.cpp
+                                ${CMAKE_CURRENT_SOURCE_DIR}/app/shard_merge.cpp)

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // A run over stereo pairs (host/app/pair_files.hpp finds and reads them): each frame's files,
-// results.jsonl, and a note for progress.
+// results.jsonl, and a note for progress; a shard of the pairs and where the state restarts
+// (docs/slurm.md).
 #pragma once
 
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <string>
@@ -15,21 +17,46 @@
 #include "host/app/frame_files.hpp"
 #include "host/app/pair_files.hpp"
 #include "host/app/run.hpp"
+#include "host/app/shard.hpp"
 
 namespace scw::app {
 
-/// Called after each frame with its position, its output and its results.jsonl line.
+/// Called after each frame with the number of frames this process ran before it, its output and
+/// its results.jsonl line.
 using FrameDone = std::function<void(std::size_t, const FrameOutput&, const nlohmann::json&)>;
 
 /// A frame's note for progress: its severity and, when an object decided it, the distance
 /// ("high at 4.219 m").
 std::string frame_note(const FrameOutput& f);
 
-/// Runs `pairs` (all of `size`) through `runner` in order, writing each frame's files
-/// (write_frame with `pictures`; prefixed by frame_prefix when there is more than one pair) and
-/// its line of results.jsonl into `dir`, which it creates.
-void run_pairs(Runner& runner, const std::vector<PairFiles>& pairs, cv::Size size,
+/// A fresh Runner: a new tracker, road stage and engine. A run calls it at each frame where its
+/// state restarts.
+using RunnerFactory = std::function<std::unique_ptr<Runner>()>;
+
+/// Which frames of a sequence a process runs and where the run's state restarts. The tracker and
+/// the road stage carry state from frame to frame, so a shard cannot start mid-run as if it had
+/// seen the frames before it: instead every run restarts its state at the first frame of each of
+/// `segments` contiguous blocks (shard_range's rule), and a shard is a whole number of blocks.
+/// One process with `segments` N writes exactly what N shards of it write together.
+struct SequenceSplit {
+  Shard shard;       // the frames run here: shard_range(shard, number of pairs)
+  int segments = 0;  // 0: shard.count; otherwise a multiple of shard.count
+};
+
+/// The frames [begin, end) that run_pairs runs of `frames`, and at which of them it restarts the
+/// state. Throws std::invalid_argument when `segments` is not a multiple of the shard count.
+struct SplitPlan {
+  ItemRange range;
+  std::vector<std::size_t> restarts;  // global frame numbers, ascending, the first is range.begin
+};
+SplitPlan plan_split(const SequenceSplit& split, std::size_t frames);
+
+/// Runs the pairs of `split`'s shard (all of `size`) in order through Runners from `make` (a new
+/// one at each restart), writing each frame's files (write_frame with `pictures`; prefixed by
+/// frame_prefix when the sequence has more than one pair) and its line of results.jsonl, numbered
+/// by its place in the whole sequence, into `dir`, which it creates.
+void run_pairs(const RunnerFactory& make, const std::vector<PairFiles>& pairs, cv::Size size,
                const std::filesystem::path& dir, const FrameDone& done,
-               Pictures pictures = Pictures::kAll);
+               Pictures pictures = Pictures::kAll, const SequenceSplit& split = {});
 
 }  // namespace scw::app

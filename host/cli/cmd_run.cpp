@@ -11,6 +11,7 @@
 #include "host/app/sequence.hpp"
 #include "host/cli/commands.hpp"
 #include "host/cli/progress.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/io/image_file.hpp"
 #include "host/labelling/run_model.hpp"
@@ -23,11 +24,12 @@ struct Options {
   std::string left, right, sequence, out_dir;
   app::CameraInput camera;
   std::string tiles, engine = "cpp", mode = disparity::mode_name(disparity::kDefaultMode);
-  std::string pictures = "all";
+  std::string pictures = "all", shard;
   app::RunOptions run;
+  int segments = 0;
 };
 
-void run(Options& o) {
+void run(Options& o, const CLI::App& cmd) {
   if (!o.tiles.empty()) std::tie(o.run.tiles_x, o.run.tiles_y) = labelling::parse_tiles(o.tiles);
   o.run.mode = disparity::mode_from_name(o.mode);
   const auto pairs = app::pairs_of(o.left, o.right, o.sequence);
@@ -40,26 +42,32 @@ void run(Options& o) {
             << "), window " << o.run.window << ", d " << o.run.min_disp << " .. "
             << o.run.max_disp << ", " << o.mode << " mode"
             << (o.run.ground ? ", ground removal" : "") << "\n";
-  app::StageEngine engine;
-  if (o.engine == "rtl") {
-    engine = host::pipeline::make_rtl_engine(o.run, first.cols, first.rows, camera.knots);
+  if (o.engine == "rtl")
     std::cerr << "run: the stages run as Verilated RTL; the C++ models check every object and "
                  "frame result\n";
-  }
-  app::Runner runner(o.run, std::move(camera.maps), std::move(engine));
-
-  Progress progress(pairs.size());
+  const auto make_runner = [&] {  // at the first frame and where the state restarts
+    app::StageEngine engine;
+    if (o.engine == "rtl")
+      engine = host::pipeline::make_rtl_engine(o.run, first.cols, first.rows, camera.knots);
+    return std::make_unique<app::Runner>(o.run, camera.maps, std::move(engine));
+  };
+  const app::SequenceSplit split{shard_of(o.shard), o.segments};
+  const std::size_t frames = app::plan_split(split, pairs.size()).range.size();
+  Progress progress(frames);
+  remove_old_manifest(o.out_dir);
   app::run_pairs(
-      runner, pairs, first.size(), o.out_dir,
+      make_runner, pairs, first.size(), o.out_dir,
       [&](std::size_t i, const app::FrameOutput& f, const nlohmann::json& j) {
         if (pairs.size() > 1)
           progress.show(i + 1, app::frame_note(f));
         else
           std::cout << j.dump() << "\n";
       },
-      app::pictures_from_name(o.pictures));
-  std::cout << "wrote " << pairs.size() << (pairs.size() == 1 ? " frame" : " frames") << " in "
-            << o.out_dir << " ("
+      app::pictures_from_name(o.pictures), split);
+  write_manifest_if_sharded(o.shard, cmd, {"out-dir"},
+                            {"", {}, {}, pairs.size(), "frames", "", {"results.jsonl"}}, o.out_dir);
+  std::cout << "wrote " << frames << (frames == 1 ? " frame" : " frames") << " in " << o.out_dir
+            << " ("
             << (o.pictures == "all"       ? "overlay.png, disparity.png, labels_color.png, "
                 : o.pictures == "overlay" ? "overlay.png, "
                                           : "")
@@ -157,9 +165,14 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--kalman", o->run.kalman, "Track with a cv::KalmanFilter (constant velocity)");
   cmd->add_option("--frame-period", o->run.frame_period_s, "Seconds between frames (speed)")
       ->capture_default_str()->check(positive("s", "0.01"));
+  add_shard_option(cmd, o->shard, "sequence's frames");
+  cmd->add_option("--segments", o->segments,
+                  "Restart the tracker and the road stage at the first frame of each of this many "
+                  "blocks (default: N of --shard, else 1; docs/slurm.md)")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--overlay-on-labels", o->run.overlay_on_labels,
                 "Draw the overlay on the label picture instead of the left image");
-  cmd->callback([o] { run(*o); });
+  cmd->callback([o, cmd] { run(*o, *cmd); });
 }
 
 }  // namespace scw::cli

@@ -10,6 +10,7 @@
 
 #include "host/app/run.hpp"
 #include "host/cli/commands.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/pipeline/sim_run.hpp"
 #include "host/pipeline/thesis_figures.hpp"
@@ -132,6 +133,7 @@ void add_sim_command(CLI::App& app) {
                   "T_L in ms at the estimated Fmax of its slowest module");
   cmd->add_flag("--reference", s.reference,
                 "also run the floating-point chain on the pair and compare the frame result");
+  add_refused_shard_option(cmd, kSimNoShard);
   cmd->callback([o] {
     try {
       const auto r = host::pipeline::run_sim(o->sim, std::cerr);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/io/image_file.hpp"
 #include "host/soak/reset_trials.hpp"
@@ -24,7 +25,8 @@ struct Options {
   int resets = 0;
   std::string real_left = "data/tsukuba/scene1.row3.col3.ppm";
   std::string real_right = "data/tsukuba/scene1.row3.col4.ppm";
-  std::string json;
+  std::string json, out_dir, shard;
+  int seeds = 0;  // > 0: that many soaks, seeds seed .. seed + K - 1
   bool no_stalls = false;
 };
 
@@ -102,6 +104,29 @@ bool run(Options& o) {
   return ok;
 }
 
+/// --seeds K: a soak for each seed from --seed on, its summary written to DIR/seed_S.json as
+/// --json writes it; --shard I/N runs the block of seeds shard_range gives (docs/slurm.md).
+bool run_seeds(Options& o, const CLI::App& cmd) {
+  if (o.out_dir.empty() || !o.json.empty())
+    throw std::invalid_argument(
+        "--seeds writes each seed's summary to DIR/seed_S.json: give "
+        "--out-dir DIR and no --json");
+  std::filesystem::create_directories(o.out_dir);
+  remove_old_manifest(o.out_dir);
+  const std::uint64_t first = o.soak.seed;
+  const auto seeds = app::shard_range(shard_of(o.shard), static_cast<std::size_t>(o.seeds));
+  bool ok = true;
+  for (std::size_t k = seeds.begin; k < seeds.end; ++k) {
+    o.soak.seed = first + k;
+    o.json = o.out_dir + "/seed_" + std::to_string(o.soak.seed) + ".json";
+    ok = run(o) && ok;
+  }
+  const std::size_t total = static_cast<std::size_t>(o.seeds);
+  write_manifest_if_sharded(o.shard, cmd, {"out-dir"}, {"", {}, {}, total, "seeds", "", {}},
+                            o.out_dir);
+  return ok;
+}
+
 }  // namespace
 
 void add_soak_command(CLI::App& app) {
@@ -133,10 +158,16 @@ void add_soak_command(CLI::App& app) {
   cmd->add_option("--inject-divergence", s.inject_divergence,
                   "flip a bit of the RTL's result K, to see the checker report it (and trace it)");
   cmd->add_option("--json", o->json, "write the summary as JSON");
-  cmd->callback([o] {
+  cmd->add_option("--seeds", o->seeds,
+                  "K soaks, seeds --seed .. --seed + K - 1, each summary to --out-dir/seed_S.json")
+      ->check(positive("soaks", "8"));
+  cmd->add_option("--out-dir", o->out_dir, "with --seeds: where the summaries go");
+  add_shard_option(cmd, o->shard, "seeds of --seeds K");
+  cmd->callback([o, cmd] {
     bool ok = false;
     try {
-      ok = run(*o);
+      if (!o->shard.empty() && o->seeds == 0) throw std::invalid_argument(kSoakNoShard);
+      ok = o->seeds > 0 ? run_seeds(*o, *cmd) : run(*o);
     } catch (const std::invalid_argument& e) {
       std::cerr << "scw soak: " << e.what() << "\n";
       throw CLI::RuntimeError(2);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/vectors/disparity_set.hpp"
 #include "host/vectors/vector_set.hpp"
 
@@ -66,6 +67,7 @@ void add_vectors_disparity_command(CLI::App& vectors) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir, "Folder with the Tsukuba PPMs");
+  add_refused_shard_option(cmd, kVectorsNoShard);
   cmd->callback([o] {
     if (o->preset.empty() && o->pair.left.empty())
       throw CLI::ValidationError("give --preset NAME, or your pair with --left L --right R");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/vectors/labelling_set.hpp"
 #include "host/vectors/vector_set.hpp"
 
@@ -54,6 +55,7 @@ void add_vectors_labelling_command(CLI::App& vectors) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
   cmd->add_option("--data-dir", o->data_dir, "Folder with truedisp.row3.col3.pgm");
+  add_refused_shard_option(cmd, kVectorsNoShard);
   cmd->callback([o] {
     if (o->preset.empty() && o->map.disparity.empty())
       throw CLI::ValidationError("give --preset NAME, or your maps with --disparity FILE ...");

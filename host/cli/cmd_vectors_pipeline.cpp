@@ -8,6 +8,7 @@
 
 #include "host/app/pair_files.hpp"
 #include "host/cli/commands.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/io/image_file.hpp"
 #include "host/vectors/pipeline_set.hpp"
 
@@ -61,6 +62,7 @@ void add_vectors_pipeline_command(CLI::App& vectors) {
                   "to equal the C++ chain's; cpp: the C++ chain only")
       ->check(CLI::IsMember({"cpp", "rtl"}));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
+  add_refused_shard_option(cmd, kVectorsNoShard);
   cmd->callback([o, frames] {
     vec::PipelineSetOptions s = o->set;
     s.height = s.width / 2;

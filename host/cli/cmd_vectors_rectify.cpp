@@ -9,6 +9,7 @@
 #include "Vcli_rectify_p2.h"
 #include "Vcli_rectify_p2_scw_rectify.h"
 #include "host/cli/commands.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/vectors/rectify_set.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/core/join.hpp"
@@ -108,6 +109,7 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                   "Chessboard or your pair: W H of the rectified ROI (default 128 96; --config "
                   "thesis: the whole image from 0 0)")
       ->expected(2);
+  add_refused_shard_option(cmd, kVectorsNoShard);
   cmd->callback([o] {
     if (o->preset.empty() && o->pair.left.empty())
       throw CLI::ValidationError(

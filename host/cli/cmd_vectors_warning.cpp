@@ -6,6 +6,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "host/vectors/warning_set.hpp"
@@ -73,6 +74,7 @@ void add_vectors_warning_command(CLI::App& vectors) {
                   "of them in order, repeated up to K")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Vector set directory to write")->required();
+  add_refused_shard_option(cmd, kVectorsNoShard);
   cmd->callback([o] {
     if (o->preset.empty() && o->user.objects.empty())
       throw CLI::ValidationError("give --preset NAME, or your tables with --objects FILE.csv");

@@ -19,6 +19,7 @@ void add_sim_command(CLI::App& app);    // `scw sim`
 void add_scene_command(CLI::App& app);  // `scw scene`
 void add_eval_command(CLI::App& app);   // `scw eval`
 void add_soak_command(CLI::App& app);   // `scw soak`
+void add_merge_command(CLI::App& app);  // `scw merge`
 /// `scw vectors rectify`, added under the `vectors` subcommand.
 void add_vectors_rectify_command(CLI::App& vectors);
 /// `scw vectors disparity`, added under the `vectors` subcommand.

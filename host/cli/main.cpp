@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   scw::cli::add_synth_command(app);
   scw::cli::add_sim_command(app);
   scw::cli::add_soak_command(app);
+  scw::cli::add_merge_command(app);
   scw::cli::add_scene_command(app);
   scw::cli::add_eval_command(app);
   scw::cli::add_vectors_command(app);
