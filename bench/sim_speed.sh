@@ -22,19 +22,16 @@ if [ -n "$base" ]; then
   [ -x "$base" ] || { echo "sim_speed.sh: no $base" >&2; exit 2; }
 fi
 
-# The widths the RTL is built at: `scw sim --engine rtl` refuses the others, naming the option.
-rtl_widths=()
-for p in 1 2 4; do
-  if "$scw" sim --config thesis --ppc "$p" --frames 1 --engine rtl --json "$work/probe.json" \
-    >/dev/null 2>&1; then rtl_widths+=("$p"); fi
-done
-[ ${#rtl_widths[@]} -gt 0 ] || echo "sim_speed.sh: this scw has no thesis-size RTL; C++ only" >&2
-
+# Whether a build has the thesis-size RTL at width P: `scw sim --engine rtl` refuses the others.
+has_rtl() {
+  "$1" sim --config thesis --ppc "$2" --frames 1 --engine rtl --json "$work/probe.json" \
+    >/dev/null 2>&1
+}
 runs=()
 for p in 1 2 4; do runs+=("cpp $p $scw"); done
-for p in "${rtl_widths[@]}"; do
-  runs+=("rtl $p $scw")
-  [ -z "$base" ] || runs+=("rtl $p $base")
+for p in 1 2 4; do
+  if has_rtl "$scw" "$p"; then runs+=("rtl $p $scw"); fi
+  if [ -n "$base" ] && has_rtl "$base" "$p"; then runs+=("rtl $p $base"); fi
 done
 
 declare -A secs cycles
@@ -44,11 +41,11 @@ for ((r = 1; r <= repeats; r++)); do
     key="$engine $p $([ "$bin" = "$scw" ] && echo this || echo baseline)"
     t0="$(date +%s.%N)"
     "$bin" sim --config thesis --ppc "$p" --frames "$frames" --engine "$engine" \
-      --json "$work/run.json" >/dev/null
+      --json "$work/run.json" >/dev/null 2>&1
     t1="$(date +%s.%N)"
     s="$(awk -v a="$t0" -v b="$t1" 'BEGIN {print b - a}')"
     secs[$key]+="$s "
-    cycles[$key]="$(grep -o '"cycles":[0-9]*' "$work/run.json" | head -1 | cut -d: -f2)"
+    cycles[$key]="$(grep -o '"cycles": *[0-9]*' "$work/run.json" | head -1 | tr -dc 0-9)"
     printf 'run %d  %-22s %8.2f s\n' "$r" "$key" "$s"
   done
 done
