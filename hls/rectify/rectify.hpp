@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/force_inline.hpp"
 #include "hls/common/stream.hpp"
 #include "hls/rectify/map_taps.hpp"
 #include "hls/rectify/rectify_params.hpp"
@@ -122,7 +123,7 @@ class Rectify {
   }
 
   // ---- writer ------------------------------------------------------------------------------
-  void write_side(bool may, bool take, const raw_type& raw, int& d_avail) {
+  SCW_INLINE void write_side(bool may, bool take, const raw_type& raw, int& d_avail) {
     if (take) {
       const Sync what = sync(raw.sof, in_.frame_start());
       if (what != Sync::kUse) err_ |= kErrRawGeometry;
@@ -144,7 +145,7 @@ class Rectify {
     }
   }
 
-  void write_beat(const raw_type& raw, int& d_avail) {
+  SCW_INLINE void write_beat(const raw_type& raw, int& d_avail) {
     if (raw.eol != (in_.col == cols() - 1)) err_ |= kErrRawGeometry;
     const int slot = in_.slot;
     for (int i = 0; i < P; ++i) buf_[slot][in_.col * P + i] = raw.px[i];
@@ -160,7 +161,7 @@ class Rectify {
   }
 
   // ---- reader ------------------------------------------------------------------------------
-  Emit read_side(bool take, const map_type& map, int& d_avail) {
+  SCW_INLINE Emit read_side(bool take, const map_type& map, int& d_avail) {
     const bool frame_start = out_.frame_start();
     Emit e;
     if (fill_) {
@@ -189,7 +190,7 @@ class Rectify {
     return e;
   }
 
-  Emit interpolate(const map_type& map) {
+  SCW_INLINE Emit interpolate(const map_type& map) {
     if (map.eol != (out_.col == cols() - 1)) err_ |= kErrMapGeometry;
     Emit e;
     e.valid = true;
@@ -200,7 +201,7 @@ class Rectify {
   /// Bilinear sample, blended horizontally then vertically with a single rounding at the end:
   /// a = f00 S + (f10 - f00) fx = f00 (S - fx) + f10 fx exactly, likewise b; then
   /// (a S + (b - a) fy + S^2 / 2) >> 2F is the formula of architecture 4.1.
-  pixel_t sample(const MapPoint& m) {
+  SCW_INLINE pixel_t sample(const MapPoint& m) {
     // The four taps fall in four banks by row and column parity (see buf_), so one clock reads
     // them all. P-fold replication for the P lanes is left to the tool (not tried).
     // clang-format off

@@ -60,6 +60,18 @@ LabellingConfig grid_config(int width, int height, int tiles_x, int tiles_y, int
   return c;
 }
 
+namespace {
+
+bool same(const LabellingConfig& a, const LabellingConfig& b) {
+  return a.width == b.width && a.height == b.height && a.tile_w == b.tile_w &&
+         a.tile_h == b.tile_h && a.floor == b.floor && a.min_area == b.min_area;
+}
+
+/// One map through a stage that may have taken maps before, then the second pass.
+Segmentation run_frame(sim::LabellingModel<HostParams>& model, const cv::Mat& disp_q4);
+
+}  // namespace
+
 Segmentation segment(const cv::Mat& disp_q4, const LabellingConfig& cfg) {
   if (disp_q4.empty() || disp_q4.type() != CV_16UC1)
     throw std::invalid_argument(
@@ -72,7 +84,31 @@ Segmentation segment(const cv::Mat& disp_q4, const LabellingConfig& cfg) {
   hls::labelling::check_config<HostParams>(cfg);  // names the field out of range
 
   using Model = sim::LabellingModel<HostParams>;
-  const auto model = std::make_unique<Model>(cfg);  // descriptor RAMs: keep them off the stack
+  // One stage per thread and configuration takes a sequence's maps back to back, as the
+  // pipeline's does: its descriptor RAMs (megabytes at the host's size) are not allocated and
+  // zeroed again for every frame; the stage clears its tables clock by clock between frames
+  // itself (its Init phase, run below before the frame is fed). A frame that fails leaves no
+  // stage behind.
+  thread_local std::unique_ptr<Model> model;
+  thread_local LabellingConfig built{};
+  if (!model || !same(built, cfg)) {
+    model.reset();
+    model = std::make_unique<Model>(cfg);
+    built = cfg;
+  }
+  try {
+    return run_frame(*model, disp_q4);
+  } catch (...) {
+    model.reset();
+    throw;
+  }
+}
+
+namespace {
+
+Segmentation run_frame(sim::LabellingModel<HostParams>& m, const cv::Mat& disp_q4) {
+  using Model = sim::LabellingModel<HostParams>;
+  Model* const model = &m;
   auto& k = model->kernel();
   std::vector<std::int32_t> node_map(disp_q4.total(), 0);
   k.set_node_map(&node_map);
@@ -106,5 +142,7 @@ Segmentation segment(const cv::Mat& disp_q4, const LabellingConfig& cfg) {
   s.objects_by_label = raster_sorted(s.objects);
   return s;
 }
+
+}  // namespace
 
 }  // namespace scw::labelling

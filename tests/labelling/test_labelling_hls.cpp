@@ -48,7 +48,8 @@ std::vector<DispMap> random_maps() {
 }
 
 /// The second pass's label image (segment(), the host build) equals the reference's pixel for
-/// pixel: the same pixel sets, numbered alike.
+/// pixel: the same pixel sets, numbered alike. segment() keeps its stage from one call of a
+/// configuration to the next, so the maps of a loop go through one stage back to back.
 void check_labels(const DispMap& m, const LabellingConfig& cfg) {
   cv::Mat d16(m.h, m.w, CV_16UC1);
   std::copy(m.d.begin(), m.d.end(), d16.ptr<std::uint16_t>());
