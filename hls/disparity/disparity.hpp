@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/force_inline.hpp"
 #include "hls/common/stream.hpp"
 #include "hls/disparity/decide_latency.hpp"
 #include "hls/disparity/disparity_params.hpp"
@@ -27,9 +28,15 @@ disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const Dispar
   const int built = candidates<NumDisp>(cfg);  // the first n of the built candidates
   const int n = limit < built ? limit : built;
   // The smallest SAD, then the largest d that has it (ties go to the larger d, as in
-  // cv::StereoBM); two passes, each a reduction a compiler vectorises.
-  sad_t m = sad[0];
-  for (int d = 1; d < n; ++d) m = sad[d] < m ? sad[d] : m;
+  // cv::StereoBM); two passes, each a reduction a compiler vectorises. A SAD is at most
+  // N * N * 255 (and the uniqueness threshold 3.55 times that), far below 2^31: compared as
+  // signed, which baseline x86-64 vectorises (SSE2 has no unsigned 32-bit compare).
+  std::int32_t least = static_cast<std::int32_t>(sad[0]);
+  for (int d = 1; d < n; ++d) {
+    const auto v = static_cast<std::int32_t>(sad[d]);
+    least = v < least ? v : least;
+  }
+  const sad_t m = static_cast<sad_t>(least);
   int best = n > 1 ? n - 1 : 0;
   while (sad[best] != m) --best;
   if (cfg.sad_limit > 0 && m > static_cast<sad_t>(cfg.sad_limit)) return invalid_code(cfg);
@@ -40,7 +47,8 @@ disp_t decide(const std::array<sad_t, NumDisp>& sad, sad_t texture, const Dispar
     // ratio: count all within it, then take the three out.
     const sad_t thresh = m + m * static_cast<sad_t>(cfg.uniqueness_ratio) / 100;
     int close = 0;
-    for (int d = 0; d < n; ++d) close += sad[d] <= thresh ? 1 : 0;
+    const auto within = static_cast<std::int32_t>(thresh);
+    for (int d = 0; d < n; ++d) close += static_cast<std::int32_t>(sad[d]) <= within ? 1 : 0;
     for (int d = best > 0 ? best - 1 : 0; d <= best + 1 && d < n; ++d)
       close -= sad[d] <= thresh ? 1 : 0;
     if (close > 0) return invalid_code(cfg);
@@ -289,7 +297,7 @@ class Disparity {
   bool input_room() const { return cfg_.prefilter ? xs_l_.write_allowed() : core_room(); }
 
   /// Counts the raw frame position (for the sof/eol checks and the resynchronisation).
-  void advance_input() {
+  SCW_INLINE void advance_input() {
     if (++in_x_ < cols()) return;
     in_x_ = 0;
     if (++in_y_ == cfg_.height) {
@@ -299,7 +307,7 @@ class Disparity {
   }
 
   /// Feeds the core the next beat pair of its own frame raster (raw or prefiltered).
-  void write_core(const in_type& l, const in_type& r) {
+  SCW_INLINE void write_core(const in_type& l, const in_type& r) {
     if (core_x_ == 0 && core_y_ == 0) ++frames_in_;
     core_.step(core_x_ * P, core_y_, l, r, [this](disp_t v) {
       queue_[(head_ + count_) % kQueue] = v;
@@ -314,13 +322,13 @@ class Disparity {
   bool computed(int u, int v) const {
     return v >= R && v < cfg_.height - R && u < cfg_.width - R;
   }
-  int computed_lanes() const {
+  SCW_INLINE int computed_lanes() const {
     int n = 0;
     for (int i = 0; i < P; ++i) n += computed(out_x_ * P + i, out_y_) ? 1 : 0;
     return n;
   }
 
-  Emit read_beat() {
+  SCW_INLINE Emit read_beat() {
     Emit e;
     e.valid = true;
     const bool frame_start = out_x_ == 0 && out_y_ == 0;
