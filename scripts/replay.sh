@@ -13,6 +13,10 @@
 #              as synthesis reads it.
 # Extra +plusargs go to the testbench (e.g. +stalls=0). Prints the testbench's PASS line, or its
 # first differing beat; exits non-zero on any failure.
+# SCW_REPLAY_RUNTIME=DIR (optional): a folder where Verilator's own runtime objects (verilated.o
+# and friends, the same for every testbench built with the same Verilator and options: about
+# 7 of a replay's 10 s of compile) are kept after the first build and reused by the next; the
+# test suite sets it, so its dozens of replays compile the runtime once.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 usage() {
@@ -169,9 +173,27 @@ mkdir -p "$work"
 if [ "$simulator" = verilator ]; then
   gargs=()
   for kv in "${tb_values[@]}"; do gargs+=("-G$kv"); done
-  verilator --binary --timing -Wno-fatal -Wno-lint -Wno-style --top-module "$tb_module" \
+  # --binary, with the build step run here (`--binary` is --main --exe --build --timing), so
+  # a kept runtime can be put in place between Verilator's C++ and its make.
+  vargs=(--cc --main --exe --timing -Wno-fatal -Wno-lint -Wno-style)
+  verilator "${vargs[@]}" --top-module "$tb_module" \
     "${gargs[@]}" "${sources[@]}" "${tb_files[@]}" -Mdir "$work/obj" >"$work/build.log" 2>&1 ||
     { cat "$work/build.log"; exit 1; }
+  runtime=""
+  if [ -n "${SCW_REPLAY_RUNTIME:-}" ]; then
+    # Keyed by the Verilator and the options, which are all the runtime's compile depends on.
+    runtime="$SCW_REPLAY_RUNTIME/$( (verilator --version; echo "${vargs[*]}") | md5sum | cut -c1-12)"
+    mkdir -p "$runtime"
+    # Copied without their times: newer than the makefile Verilator just wrote, make takes
+    # them as built.
+    (flock 9; cp "$runtime"/verilated*.[od] "$work/obj/" 2>/dev/null || true) 9>"$runtime.lock"
+  fi
+  make -C "$work/obj" -f "V$tb_module.mk" >>"$work/build.log" 2>&1 ||
+    { cat "$work/build.log"; exit 1; }
+  if [ -n "$runtime" ] && ! [ -e "$runtime/verilated.o" ]; then
+    (flock 9; [ -e "$runtime/verilated.o" ] || cp "$work/obj"/verilated*.[od] "$runtime/") \
+      9>"$runtime.lock"
+  fi
   "$work/obj/V$tb_module" "${args[@]}" | tee "$work/run.log"
 else
   command -v iverilog >/dev/null ||

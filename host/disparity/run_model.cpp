@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "hls/disparity/disparity.hpp"
 #include "sim/core/frame_beats.hpp"
 
 namespace scw::disparity {
@@ -38,30 +39,31 @@ bool same(const DisparityConfig& a, const DisparityConfig& b) {
 template <int N>
 cv::Mat run_built(const cv::Mat& left, const cv::Mat& right, const DisparityConfig& cfg) {
   using Params = hls::disparity::DisparityParams<1, kHostMaxWidthPx, N, kHostMaxNumDisp>;
-  using Model = sim::DisparityModel<Params>;
+  using Kernel = hls::disparity::Disparity<Params>;
   // One stage per thread and configuration takes a sequence's frames back to back, as the
   // pipeline's does (every output pixel depends on its own frame only): its 0.6 MB of line
   // buffers and sums are not allocated and cleared again for every frame. A frame that fails
-  // leaves no stage behind.
-  thread_local std::unique_ptr<Model> model;
+  // leaves no stage behind. The frame runs through the stage's top loop (disparity_frame: one
+  // clock of the kernel an iteration, the output never stalled; its C-simulation test holds it
+  // equal to the clocked model), straight from the images to the map.
+  thread_local std::unique_ptr<Kernel> kernel;
   thread_local DisparityConfig built{};
-  if (!model || !same(built, cfg)) {
-    model.reset();
-    model = std::make_unique<Model>(cfg);
+  if (!kernel || !same(built, cfg)) {
+    kernel.reset();
+    kernel = std::make_unique<Kernel>(cfg);
     built = cfg;
   }
-  const auto l = sim::frame_beats<1>(left.ptr<std::uint8_t>(), cfg.width, cfg.height);
-  const auto r = sim::frame_beats<1>(right.ptr<std::uint8_t>(), cfg.width, cfg.height);
-  std::vector<typename Params::disp_beat> beats;
-  try {
-    beats = run_disparity_frames(*model, l, r);
-  } catch (...) {
-    model.reset();
-    throw;
-  }
+  using In = typename Params::pixel_beat;
+  sim::FrameBeatsIn<In> l(left.ptr<std::uint8_t>(), cfg.width, cfg.height);
+  sim::FrameBeatsIn<In> r(right.ptr<std::uint8_t>(), cfg.width, cfg.height);
   cv::Mat out(cfg.height, cfg.width, CV_16SC1);
-  auto* dst = out.ptr<std::uint16_t>();
-  for (std::size_t i = 0; i < beats.size(); ++i) dst[i] = beats[i].px[0];
+  sim::FrameBeatsOut<typename Params::disp_beat> o(out.ptr<std::uint16_t>());
+  const int n = cfg.width * cfg.height;
+  const long max_clocks = 4L * 3 * n + 100000;  // a frame takes n clocks and a few rows more
+  if (hls::disparity::disparity_frame(*kernel, l, r, o, n, max_clocks) != n || kernel->error()) {
+    kernel.reset();
+    throw std::logic_error("disparity_image: the stage stopped or flagged a frame error");
+  }
   return out;
 }
 

@@ -1,20 +1,23 @@
 // SPDX-License-Identifier: Apache-2.0
-// Whole images through the fixed-point rectify model, one beat per clock, no stalls.
+// Whole images through the fixed-point rectify stage, one clock an iteration, no stalls.
 #include "host/rectify/run_model.hpp"
 
 #include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "hls/rectify/rectify.hpp"
 #include "sim/core/frame_beats.hpp"
-#include "sim/models/rectify_model.hpp"
 
 namespace scw::rectify {
 
 namespace {
 using HostParams = hls::rectify::RectifyParams<1, 2048, 2048, kHostStageRows>;
 
-using Model = sim::RectifyModel<HostParams>;
+// The stage's top loop (rectify_frame: one clock of the kernel an iteration, the output never
+// stalled), the loop its C-simulation test holds equal to the clocked model, without a vector of
+// beats in or out: the sequence runner's share of time is this loop.
+using Kernel = hls::rectify::Rectify<HostParams>;
 
 void check_image(const cv::Mat& raw, int width, int height) {
   if (raw.type() != CV_8UC1)
@@ -29,8 +32,8 @@ void check_image(const cv::Mat& raw, int width, int height) {
 
 struct Rectifier::Stage {
   int width = 0, height = 0;
-  std::unique_ptr<Model> model;  // line buffers: keep them off the stack
-  std::vector<Model::b_type> points;
+  std::unique_ptr<Kernel> kernel;  // line buffers: keep them off the stack
+  std::vector<Kernel::map_type> points;
 };
 
 Rectifier::Rectifier(const FixedMap& map, int lead_rows) : stage_(std::make_unique<Stage>()) {
@@ -47,9 +50,9 @@ Rectifier::Rectifier(const FixedMap& map, int lead_rows) : stage_(std::make_uniq
                                 std::to_string(HostParams::kRows - 1));
   stage_->width = map.width;
   stage_->height = map.height;
-  stage_->model =
-      std::make_unique<Model>(hls::rectify::RectifyConfig{map.width, map.height, lead_rows});
-  stage_->points = sim::frame_beats_of<Model::b_type>(map.points.data(), map.width, map.height);
+  stage_->kernel =
+      std::make_unique<Kernel>(hls::rectify::RectifyConfig{map.width, map.height, lead_rows});
+  stage_->points = sim::frame_beats_of<Kernel::map_type>(map.points.data(), map.width, map.height);
 }
 
 Rectifier::~Rectifier() = default;
@@ -60,13 +63,17 @@ cv::Mat Rectifier::operator()(const cv::Mat& raw) {
   const Stage& s = *stage_;
   check_image(raw, s.width, s.height);
   const cv::Mat img = raw.isContinuous() ? raw : raw.clone();
-  const auto pixels = sim::frame_beats<1>(img.ptr<std::uint8_t>(), img.cols, img.rows);
-  const auto beats = sim::drain_join(*s.model, pixels, s.points, pixels.size());
+  const int n = static_cast<int>(s.points.size());
+  sim::FrameBeatsIn<Kernel::raw_type> pixels(img.ptr<std::uint8_t>(), img.cols, img.rows);
+  hls::ArrayIn<Kernel::map_type> points(s.points.data(), n);
   cv::Mat out(raw.rows, raw.cols, CV_8UC1);
-  for (std::size_t n = 0; n < beats.size(); ++n) out.data[n] = beats[n].px[0];
-  if (s.model->kernel().error() != 0)
+  sim::FrameBeatsOut<Kernel::out_type> beats(out.ptr<std::uint8_t>());
+  const long max_clocks = 4L * 3 * n + 100000;  // a frame takes n clocks and a few rows more
+  if (hls::rectify::rectify_frame(*s.kernel, pixels, points, beats, n, max_clocks) != n)
+    throw std::logic_error("rectify_image: the stage stopped producing output");
+  if (s.kernel->error() != 0)
     throw std::logic_error("rectify_image: the stage flagged error bits " +
-                           std::to_string(s.model->kernel().error()));
+                           std::to_string(s.kernel->error()));
   return out;
 }
 

@@ -98,11 +98,11 @@ class Trial {
     for (int k = 0; k < 2; ++k) {
       const auto f = ref.next(content_[static_cast<std::size_t>(next + k)].left,
                               content_[static_cast<std::size_t>(next + k)].right);
-      const auto& got = want.results[static_cast<std::size_t>(k)].data.frame;
+      const auto& result = want.results[static_cast<std::size_t>(k)].data.frame;
       auto why = pipeline::object_mismatch(
           objects_per_frame(want.object_table)[static_cast<std::size_t>(k)], f);
       if (why.empty()) {
-        why = pipeline::reference_mismatch(got, f, o_.width, o_.height, soak_stage_options());
+        why = pipeline::reference_mismatch(result, f, o_.width, o_.height, soak_stage_options());
         // A decision the doubles may take the other way is not a failure (the soak counts it).
         if (!why.empty() &&
             !pipeline::decision_boundary(f, o_.width, o_.height, soak_stage_options()).empty()) {

@@ -34,4 +34,49 @@ std::vector<hls::Beat<std::uint8_t, P>> frame_beats(const std::uint8_t* img, int
   return frame_beats_of<hls::Beat<std::uint8_t, P>>(img, width, height);
 }
 
+/// The beats frame_beats_of would make, read one at a time with a stream's read side (the
+/// stage tops' port, hls/common/stream.hpp): a whole-image runner feeds a frame function from
+/// the image itself, with no vector of beats in between.
+template <typename B>
+class FrameBeatsIn {
+ public:
+  FrameBeatsIn(const typename B::value_type* values, int width, int height)
+      : values_(values), cols_(width / B::kPixels), rows_(height) {}
+  bool empty() const { return row_ >= rows_; }
+  B read() {
+    B b;
+    for (int i = 0; i < B::kPixels; ++i) b.px[i] = values_[i];
+    values_ += B::kPixels;
+    b.sof = col_ == 0 && row_ == 0;
+    b.eol = col_ == cols_ - 1;
+    if (b.eol) {
+      col_ = 0;
+      ++row_;
+    } else {
+      ++col_;
+    }
+    return b;
+  }
+
+ private:
+  const typename B::value_type* values_;
+  int cols_, rows_, col_ = 0, row_ = 0;
+};
+
+/// A row-major image written beat by beat with a stream's write side: the pixels only (the
+/// caller checks the frame's geometry by the count). The caller sizes the image.
+template <typename B, typename T = typename B::value_type>
+class FrameBeatsOut {
+ public:
+  explicit FrameBeatsOut(T* values) : values_(values) {}
+  bool full() const { return false; }
+  void write(const B& b) {
+    for (int i = 0; i < B::kPixels; ++i) values_[i] = static_cast<T>(b.px[i]);
+    values_ += B::kPixels;
+  }
+
+ private:
+  T* values_;
+};
+
 }  // namespace scw::sim

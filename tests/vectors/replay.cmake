@@ -4,6 +4,9 @@
 # SystemVerilog in Verilator (2-state), and the block as Yosys writes it in Icarus Verilog
 # (4-state), each with idle input cycles and output backpressure. A new set under vectors/ is
 # replayed by adding its folder; nothing here names a set.
+# Every replay keeps Verilator's runtime objects in one folder of the build (scripts/replay.sh,
+# SCW_REPLAY_RUNTIME): compiled by the first, reused by the rest.
+set(SCW_REPLAY_ENV "SCW_REPLAY_RUNTIME=${CMAKE_BINARY_DIR}/replay-runtime")
 file(GLOB _scw_set_manifests CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/vectors/*/*/manifest.json")
 list(SORT _scw_set_manifests)
 foreach(_manifest IN LISTS _scw_set_manifests)
@@ -16,7 +19,8 @@ foreach(_manifest IN LISTS _scw_set_manifests)
              COMMAND bash "${PROJECT_SOURCE_DIR}/scripts/replay.sh" "${_set_dir}"
                      "replay/${_sim}/${_work}" --simulator ${_sim}
              WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-    set_tests_properties("${_name}" PROPERTIES LABELS "vectors;${_sim}" TIMEOUT 300)
+    set_tests_properties("${_name}" PROPERTIES LABELS "vectors;${_sim}" TIMEOUT 300
+                                               ENVIRONMENT "${SCW_REPLAY_ENV}")
   endforeach()
 endforeach()
 
@@ -27,4 +31,5 @@ add_test(NAME "vectors:a wrong beat in pipeline/small_street fails both simulato
                  "${PROJECT_SOURCE_DIR}/vectors/pipeline/small_street" wrong_beat
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("vectors:a wrong beat in pipeline/small_street fails both simulators, named by stream, frame, row and column"
-                     PROPERTIES LABELS "vectors;verilator;icarus" TIMEOUT 300)
+                     PROPERTIES LABELS "vectors;verilator;icarus" TIMEOUT 300
+                                ENVIRONMENT "${SCW_REPLAY_ENV}")

@@ -20,7 +20,7 @@ function(scw_replay_user_set set fixture title)
              WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
     set_tests_properties("vectors:${title} in ${_sim}"
                          PROPERTIES FIXTURES_REQUIRED ${fixture} LABELS "vectors;${_sim}"
-                                    TIMEOUT 300)
+                                    TIMEOUT 300 ENVIRONMENT "${SCW_REPLAY_ENV}")
   endforeach()
 endfunction()
 add_test(NAME "vectors:scw vectors disparity from a user's pair equals the tsukuba preset's streams"
