@@ -128,10 +128,13 @@ class Bits {
   }
 
  private:
+  // The check inline, the message out of line: every port field of every clock passes here.
   void check_range(int lsb, int n) const {
-    if (lsb < 0 || n < 0 || n > 64 || lsb + n > width_)
-      throw std::out_of_range("bit field [" + std::to_string(lsb) + " +: " + std::to_string(n) +
-                              "] outside a " + std::to_string(width_) + "-bit word");
+    if (__builtin_expect(lsb < 0 || n < 0 || n > 64 || lsb + n > width_, 0)) range_error(lsb, n);
+  }
+  [[noreturn, gnu::noinline, gnu::cold]] void range_error(int lsb, int n) const {
+    throw std::out_of_range("bit field [" + std::to_string(lsb) + " +: " + std::to_string(n) +
+                            "] outside a " + std::to_string(width_) + "-bit word");
   }
   void mask_top() {
     if (width_ % 32 != 0 && n_ > 0) data()[n_ - 1] &= (1u << (width_ % 32)) - 1u;
