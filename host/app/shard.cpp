@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "host/io/json_file.hpp"
+
 namespace scw::app {
 
 namespace fs = std::filesystem;
@@ -39,9 +41,7 @@ void write_shard_manifest(const fs::path& dir, const ShardManifest& m) {
       {"command", m.command},   {"shard", m.shard.index}, {"of", m.shard.count},
       {"begin", m.range.begin}, {"end", m.range.end},     {"total", m.total},
       {"unit", m.unit},         {"settings", m.settings}, {"concatenate", m.concatenate}};
-  std::ofstream f(dir / "shard.json");
-  f << j.dump(2) << "\n";
-  if (!f) throw std::runtime_error("cannot write '" + (dir / "shard.json").string() + "'");
+  host::io::write_json(dir / "shard.json", j);
 }
 
 ShardManifest read_shard_manifest(const fs::path& dir) {

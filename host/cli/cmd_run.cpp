@@ -11,6 +11,7 @@
 #include "host/app/sequence.hpp"
 #include "host/cli/commands.hpp"
 #include "host/cli/progress.hpp"
+#include "host/cli/run_options.hpp"
 #include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/io/image_file.hpp"
@@ -81,20 +82,11 @@ void add_run_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "run", "The whole chain (rectify, disparity, labelling, warning) on the stages' C++ models, "
              "then classification, tracking and the warning overlay");
-  cmd->add_option("--calib", o->camera.calib, "OpenCV FileStorage calibration (M1 D1 M2 D2 R T) of raw pairs");
+  add_camera_options(cmd, o->camera);
   cmd->add_option("--left", o->left, "Left image")->check(CLI::ExistingFile);
   cmd->add_option("--right", o->right, "Right image")->check(CLI::ExistingFile);
   cmd->add_option("--sequence", o->sequence, "Folder of numbered pairs (NNNN_left.png, NNNN_right.png)");
   cmd->add_option("--out-dir", o->out_dir, "Where the pictures and results.jsonl go")->required();
-  cmd->add_flag("--rectified", o->camera.rectified, "The pairs are already rectified: skip rectification");
-  cmd->add_option("--focal", o->camera.focal, "With --rectified: focal length, px");
-  cmd->add_option("--baseline", o->camera.baseline, "With --rectified: baseline, m");
-  cmd->add_option("--cx", o->camera.cx, "With --rectified: principal point u, px (default: image centre)")
-      ->check(non_negative("px", "319.5"));
-  cmd->add_option("--cy", o->camera.cy, "With --rectified: principal point v, px (default: image centre)")
-      ->check(non_negative("px", "239.5"));
-  cmd->add_option("--calib-unit-m", o->camera.calib_unit_m,
-                  "Metres per calibration unit (e.g. the chessboard square), default 1")->capture_default_str();
   cmd->add_option("--pictures", o->pictures,
                   "Pictures a frame writes: all (the rectified pair, disparity, labels, overlay, "
                   "road), overlay, or none (objects.csv and results.jsonl are always written)")
@@ -103,15 +95,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--engine", o->engine,
                   "cpp: the stages' C++ models; rtl: every block Verilated (rectified pairs, a "
                   "built size: small up to 128 x 96, window 9, 16 disparities, 2x2 tiles)")
-      ->capture_default_str()->check(CLI::IsMember({"cpp", "rtl"}));
-  cmd->add_option("--maps", o->camera.maps,
-                  "Raw pairs on --engine cpp: full (the calibration's maps, quantised) or grid "
-                  "(knots every 2^--grid-log2 px, expanded as the RTL's map-grid stage does; "
-                  "--engine rtl always runs grid knots at its build's spacing)")
-      ->capture_default_str()->check(CLI::IsMember({"full", "grid"}));
-  cmd->add_option("--grid-log2", o->camera.grid_log2,
-                  "Knot spacing of --maps grid, log2 px (4: the thesis build's 16 px)")
-      ->capture_default_str()->check(CLI::Range(2, 7));
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cpp", "rtl"}));
   cmd->add_option("--tiles", o->tiles, "Labelling tile grid, columns x rows (default 4x4)");
   cmd->add_option("--window", o->run.window, "SAD window N")->capture_default_str()->check(odd_window());
   cmd->add_option("--min-disp", o->run.min_disp, "Smallest candidate disparity")->capture_default_str()
@@ -135,28 +120,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--camera-pitch", o->run.camera_pitch_deg,
                   "Camera's downward pitch, degrees (the road stage's first horizon; the road "
                   "it fits replaces it)")->capture_default_str();
-  cmd->add_option("--min-height", o->run.warning.min_height_m,
-                  "Lower objects are not obstacles (road markings), m")->capture_default_str()
-      ->check(non_negative("m", "0.5"));
-  cmd->add_option_function<std::string>(
-         "--distance-rule",
-         [o](const std::string& rule) {
-           o->run.warning.distance_rule = rule == "closest" ? hls::warning::DistanceRule::kClosest
-                                                            : hls::warning::DistanceRule::kSpread;
-         },
-         "Which disparity places an object: spread, min(d_max, mean + k sd) of its disparities "
-         "(default), or closest, its largest (the thesis's)")
-      ->check(CLI::IsMember({"spread", "closest"}));
-  cmd->add_option("--spread-k", o->run.warning.spread_k,
-                  "k of the spread rule, 0 .. 15.9375 (steps of 1/16)")
-      ->capture_default_str()->check(CLI::Range(0.0, 15.9375));
-  cmd->add_option("--near", o->run.warning.near_m,
-                  "Outside the tunnel: medium when this close to it, m")->capture_default_str()
-      ->check(non_negative("m", "1"));
-  cmd->add_option("--car-width", o->run.warning.car_width_m, "Car width, m (tunnel: 1.5x)")->capture_default_str()
-      ->check(positive("m", "1.8"));
-  cmd->add_option("--car-height", o->run.warning.car_height_m, "Car height, m (tunnel: 1.5x)")->capture_default_str()
-      ->check(positive("m", "1.5"));
+  add_warning_options(cmd, o->run.warning);
   cmd->add_option("--classifier", o->run.classifier, "Model from scw train (SVM or neural network); "
                   "default: the parallelepiped classifier of Table 5.4")->check(CLI::ExistingFile);
   cmd->add_option("--classifier-s", o->run.classifier_s,

@@ -3,7 +3,6 @@
 // frames and random stalls, and reset in mid-frame (host/soak/); a JSON summary, progress on the
 // terminal, and the first divergence with an FST trace around it.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -13,6 +12,7 @@
 #include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/io/image_file.hpp"
+#include "host/io/json_file.hpp"
 #include "host/soak/reset_trials.hpp"
 #include "host/soak/soak.hpp"
 
@@ -32,26 +32,6 @@ struct Options {
 
 void say(const std::string& line) { std::cerr << line << "\n"; }
 
-void print(const host::soak::SoakSummary& s) {
-  std::cout << "soak: " << s.frames << " frames (" << s.malformed << " broken), " << s.results
-            << " results, " << s.cycles << " cycles: " << s.divergences << " divergences, "
-            << s.deadlocks << " deadlocks, " << s.flag_mismatches << " flag mismatches, "
-            << s.reference_mismatches << " of " << s.reference_checked
-            << " good frames off the floating-point reference (" << s.reference_boundary
-            << " more differ only at a decision boundary)\n";
-  if (s.first_divergence)
-    std::cout << "first divergence: result " << s.first_divergence->frame << " at cycle "
-              << s.first_divergence->cycle << ": " << s.first_divergence->what
-              << (s.first_divergence->fst.empty() ? "" : "\n  trace: " + s.first_divergence->fst)
-              << "\n";
-  if (!s.deadlock.empty()) std::cout << "stuck: " << s.deadlock << "\n";
-  if (!s.first_flag_mismatch.empty()) std::cout << "first flag mismatch: " << s.first_flag_mismatch << "\n";
-  if (!s.first_reference_boundary.empty())
-    std::cout << "first boundary case: " << s.first_reference_boundary << "\n";
-  if (!s.first_reference_mismatch.empty())
-    std::cout << "first reference mismatch: " << s.first_reference_mismatch << "\n";
-}
-
 /// Runs and prints; false when anything differed.
 bool run(Options& o) {
   if (o.config != "small")
@@ -70,7 +50,7 @@ bool run(Options& o) {
                                 "--real-right, or run from the repository's root)");
   }
   const auto summary = host::soak::run_soak(s);
-  print(summary);
+  std::cout << summary.text();
   nlohmann::json j = summary.to_json();
   j["config"] = o.config;
   j["seed"] = s.seed;
@@ -78,27 +58,14 @@ bool run(Options& o) {
   j["size"] = {s.width, s.height};
   bool ok = summary.passed();
   if (o.resets > 0) {
-    host::soak::ResetOptions r;
-    r.trials = o.resets;
-    r.seed = s.seed;
-    r.width = s.width;
-    r.height = s.height;
-    r.stalls = s.stalls;
-    r.real = s.real;
-    r.progress = say;
-    const auto rs = host::soak::run_reset_trials(r);
+    const auto rs = host::soak::run_reset_trials(host::soak::ResetOptions::like(s, o.resets));
     std::cout << "resets: " << rs.trials << " in mid-frame, " << rs.failures << " failed"
               << (rs.first_failure.empty() ? "" : ": first " + rs.first_failure) << "\n";
     j["resets"] = rs.to_json();
     ok = ok && rs.failures == 0;
   }
   if (!o.json.empty()) {
-    const auto dir = std::filesystem::path(o.json).parent_path();
-    std::error_code ec;
-    if (!dir.empty()) std::filesystem::create_directories(dir, ec);
-    std::ofstream f(o.json);
-    if (!f) throw std::invalid_argument("--json " + o.json + ": cannot write there");
-    f << j.dump(2) << "\n";
+    host::io::write_json(o.json, j);
     std::cerr << "wrote " << o.json << "\n";
   }
   return ok;

@@ -26,6 +26,11 @@ struct ResetOptions {
   bool stalls = true;  // random input gaps and output backpressure
   RealPair real;
   Progress progress;
+
+  /// `trials` resets on the soak's frame size, seed, stalls, real pair and progress.
+  static ResetOptions like(const SoakOptions& soak, int trials) {
+    return {trials, soak.seed, soak.width, soak.height, soak.stalls, soak.real, soak.progress};
+  }
 };
 
 struct ResetSummary {

@@ -63,6 +63,8 @@ struct SoakSummary {
   std::string first_reference_mismatch, first_reference_boundary, first_flag_mismatch, deadlock;
   /// frames, malformed, divergences, deadlocks, reference_mismatches and the rest.
   nlohmann::json to_json() const;
+  /// The lines `scw soak` prints: counts, then the first of each kind of failure.
+  std::string text() const;
   bool passed() const {
     return divergences == 0 && deadlocks == 0 && reference_mismatches == 0 && flag_mismatches == 0;
   }

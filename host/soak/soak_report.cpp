@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Comparing two runs of the pipeline result by result, and the soak's JSON summary
+// Comparing two runs of the pipeline result by result, and the soak's summary as JSON and text
 // (host/soak/soak.hpp).
 #include <algorithm>
 #include <sstream>
@@ -89,6 +89,26 @@ nlohmann::json SoakSummary::to_json() const {
   if (!first_flag_mismatch.empty()) j["first_flag_mismatch"] = first_flag_mismatch;
   if (!deadlock.empty()) j["deadlock"] = deadlock;
   return j;
+}
+
+std::string SoakSummary::text() const {
+  std::ostringstream s;
+  s << "soak: " << frames << " frames (" << malformed << " broken), " << results << " results, "
+    << cycles << " cycles: " << divergences << " divergences, " << deadlocks << " deadlocks, "
+    << flag_mismatches << " flag mismatches, " << reference_mismatches << " of "
+    << reference_checked << " good frames off the floating-point reference (" << reference_boundary
+    << " more differ only at a decision boundary)\n";
+  if (first_divergence)
+    s << "first divergence: result " << first_divergence->frame << " at cycle "
+      << first_divergence->cycle << ": " << first_divergence->what
+      << (first_divergence->fst.empty() ? "" : "\n  trace: " + first_divergence->fst) << "\n";
+  if (!deadlock.empty()) s << "stuck: " << deadlock << "\n";
+  if (!first_flag_mismatch.empty()) s << "first flag mismatch: " << first_flag_mismatch << "\n";
+  if (!first_reference_boundary.empty())
+    s << "first boundary case: " << first_reference_boundary << "\n";
+  if (!first_reference_mismatch.empty())
+    s << "first reference mismatch: " << first_reference_mismatch << "\n";
+  return s.str();
 }
 
 }  // namespace scw::host::soak

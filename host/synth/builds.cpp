@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "hls/pipeline/pipeline_params.hpp"
+#include "host/io/json_file.hpp"
 #include "host/synth/timing.hpp"
 #include "host/synth/top_params.hpp"
 
@@ -102,13 +103,6 @@ std::vector<ModuleRun> select(const std::vector<ModuleRun>& all, const std::stri
     if (std::find(wanted.begin(), wanted.end(), m.module) != wanted.end()) todo.push_back(m);
   }
   return todo;
-}
-
-void write_json(const fs::path& out, const json& doc) {
-  std::ofstream f(out);
-  if (!f) throw std::runtime_error("cannot write '" + out.string() + "'");
-  f << doc.dump(2) << "\n";
-  if (!f) throw std::runtime_error("cannot write '" + out.string() + "'");
 }
 
 /// ltp is skipped on the thesis-size top (slower than the synthesis): its level figure is the
@@ -219,7 +213,7 @@ std::vector<Result> synthesise_build(const BuildRun& b, std::string& tool_out,
     if (r.ok && no_ltp) borrow_levels(r, results);
     results.push_back(r);
     doc["modules"].push_back(result_json(r));
-    write_json(b.json_out, doc);
+    io::write_json(b.json_out, doc);
   }
   return results;
 }
