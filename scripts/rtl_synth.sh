@@ -242,11 +242,12 @@ if [[ $run_sta -eq 1 ]]; then
     "<unknown>")
       # Yosys takes the latest arrival over every net. The unused nets a 7-series netlist is
       # full of are the spare outputs of wide cells: the top of a carry chain (CARRY4 O/CO), the
-      # block RAM and DSP output bits a narrower word leaves over. Their arrival is the cell's,
-      # so the figure still covers the logic. Any other untimed end is refused.
+      # block RAM and DSP output bits a narrower word leaves over, and a LUT RAM's write port's
+      # own read output (RAM32M/RAM64M's DOD, unused in simple dual-port use). Their arrival is
+      # the cell's, so the figure still covers the logic. Any other untimed end is refused.
       if [[ "$last_hop" =~ ^CARRY4\.[A-Z0-9]+-\>C?O$ ]]; then
         sta_to="unused_carry_output"
-      elif [[ "$last_hop" =~ ^(RAMB18E1|RAMB36E1|DSP48E1)\. ]]; then
+      elif [[ "$last_hop" =~ ^(RAMB18E1|RAMB36E1|DSP48E1|RAM32M|RAM64M)\. ]]; then
         sta_to="unused_${last_hop%%.*}_output"
       else
         keep_work=$own_log

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `scw sim`: the whole pipeline clocked in sim/ (host/pipeline/sim_run.hpp); per-stage busy
 // time, frame period and latency printed beside the thesis's Table 5.7.
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -12,6 +11,7 @@
 #include "host/cli/commands.hpp"
 #include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
+#include "host/io/json_file.hpp"
 #include "host/pipeline/sim_run.hpp"
 #include "host/pipeline/thesis_figures.hpp"
 
@@ -140,7 +140,7 @@ void add_sim_command(CLI::App& app) {
       print_timing(r);
       print_frames(r);
       if (!o->json.empty()) {
-        std::ofstream(o->json) << host::pipeline::sim_json(r).dump(2) << "\n";
+        host::io::write_json(o->json, host::pipeline::sim_json(r));
         std::cerr << "wrote " << o->json << "\n";
       }
     } catch (const std::invalid_argument& e) {

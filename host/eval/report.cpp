@@ -3,13 +3,13 @@
 #include "host/eval/report.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 
 #include "host/eval/surfaces.hpp"
+#include "host/io/json_file.hpp"
 
 namespace scw::host::eval {
 
@@ -132,9 +132,7 @@ json report_json(const EvalReport& r) {
 }
 
 void write_report_json(const std::filesystem::path& file, const EvalReport& r) {
-  std::ofstream out(file);
-  out << report_json(r).dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write '" + file.string() + "'");
+  io::write_json(file, report_json(r));
 }
 
 }  // namespace scw::host::eval

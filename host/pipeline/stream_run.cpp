@@ -3,11 +3,11 @@
 #include "host/pipeline/stream_run.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 
 #include "host/io/image_file.hpp"
+#include "host/io/json_file.hpp"
 #include "host/pipeline/thesis_figures.hpp"
 #include "host/vectors/line_buffer_set.hpp"
 #include "sim/core/stall.hpp"
@@ -63,7 +63,7 @@ void write_stream_files(const StreamOptions& o, const StreamRun& r, const cv::Ma
   j["engine"] = o.engine;
   j["ppc"] = r.ppc;
   j["clock_mhz"] = thesis::kClockMhz;
-  std::ofstream(dir / "report.json") << j.dump(2) << "\n";
+  io::write_json(dir / "report.json", j);
   vectors::write_line_buffer_set(dir / "vectors", {r.ppc, r.max_width_px, r.rows, r.latency},
                                  grey, r.input, r.expected);
 }

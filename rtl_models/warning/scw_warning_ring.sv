@@ -17,8 +17,8 @@
 // enable. The words are not: whatever they hold after reset is masked by the stage's valid
 // pipeline, as the chains' were.
 module scw_warning_ring #(
-  parameter int unsigned Width = 1,
-  parameter int unsigned Depth = 17  // >= 2
+  parameter int unsigned Width = 32,  // the defaults: a line like the stage's (rtl.yosys.* test)
+  parameter int unsigned Depth = 64   // >= 2
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
