@@ -82,15 +82,7 @@ void print_frames(const host::pipeline::SimRun& r) {
                       : std::string())
               << "\n";
   }
-  if (const auto& c = r.reference) {
-    std::cout << "floating-point chain: " << app::severity_name(c->severity) << ", " << c->objects
-              << " objects"
-              << (c->index >= 0 ? ", deciding object at " + std::to_string(c->distance_m) + " m"
-                                : std::string())
-              << (c->agrees ? ": agrees with the pipeline's last result (distance within 1 cm "
-                              "and one code)\n"
-                            : ": DIFFERS from the pipeline's last result\n");
-  }
+  if (r.reference) std::cout << r.reference->text() << "\n";
 }
 
 }  // namespace

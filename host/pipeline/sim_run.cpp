@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <utility>
-
-#include <opencv2/imgproc.hpp>
 
 #include "hls/pipeline/pipeline_params.hpp"
 #include "host/app/run.hpp"
@@ -285,6 +285,16 @@ nlohmann::json sim_json(const SimRun& r) {
            {{"fpga", {{"period", thesis::kPeriodMs.fpga}, {"latency", thesis::kLatencyMs.fpga}}},
             {"gpu", {{"period", thesis::kPeriodMs.gpu}, {"latency", thesis::kLatencyMs.gpu}}},
             {"cpu", {{"period", thesis::kPeriodMs.cpu}, {"latency", thesis::kLatencyMs.cpu}}}}}};
+}
+
+std::string ReferenceCheck::text() const {
+  std::ostringstream s;
+  s << "floating-point chain: " << hls::warning::severity_name(severity) << ", " << objects
+    << " objects";
+  if (index >= 0) s << ", deciding object at " << std::to_string(distance_m) << " m";
+  s << (agrees ? ": agrees with the pipeline's last result (distance within 1 cm and one code)"
+               : ": DIFFERS from the pipeline's last result");
+  return s.str();
 }
 
 }  // namespace scw::host::pipeline

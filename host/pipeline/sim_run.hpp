@@ -45,6 +45,8 @@ struct ReferenceCheck {
   int index = -1;
   double distance_m = 0.0;
   bool agrees = false;
+  /// The line `scw sim --reference` prints: the chain's result and whether it agrees.
+  std::string text() const;
 };
 
 /// What a run measured.
