@@ -87,7 +87,8 @@ case "$stage" in
     plusargs=(width=width height=height lead=lead_rows) ;;
   disparity)
     tb=disparity/tb/tb_disparity_replay.sv top=scw_disparity
-    rtl=(common/scw_ram_sdp.sv "$(cd "$root/rtl_models" && echo disparity/*.sv)")
+    rtl=(common/scw_ram_sdp.sv common/scw_delay_ring.sv
+         "$(cd "$root/rtl_models" && echo disparity/*.sv)")
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height Window=window
                 NumDisp=num_disp)
     tb_params=(Beats=beats)
@@ -115,7 +116,7 @@ case "$stage" in
               min_count=min_count) ;;
   warning)
     tb=warning/tb/tb_warning_replay.sv top=scw_warning
-    rtl=("$(cd "$root/rtl_models" && echo warning/*.sv)")
+    rtl=(common/scw_delay_ring.sv "$(cd "$root/rtl_models" && echo warning/*.sv)")
     dut_params=(MaxDisparityPx=max_disparity_px)
     tb_params=(WordsIn=words_in WordsOut=words_out
                "InW=$(($(file_field in.hex width_bits) - 1))"

@@ -134,17 +134,17 @@ module scw_disparity_decide #(
     invalid_q <= cfg_invalid_i;
   end
 
-  // K for every U: a 256-word ROM in LUTs (U is static, so K is too).
-  function automatic logic [KW-1:0] k_of(input logic [7:0] u);
-    k_of = '0;
-    for (int i = 0; i < 256; i++) begin
-      if (u == 8'(i)) k_of = KW'(((64'(i) << KShift) + 64'd99) / 64'd100);
-    end
-  endfunction
+  // K for every U: a 256-word ROM in LUTs (U is static, so K is too). A table of constants
+  // rather than a function that searches it: a simulator evaluates the table once, where the
+  // search ran its 256 compares at every clock (a third of this block's simulation time).
+  logic [KW-1:0] k_rom [256];
+  for (genvar i = 0; i < 256; i++) begin : gen_k_rom
+    assign k_rom[i] = KW'(((64'(i) << KShift) + 64'd99) / 64'd100);
+  end
   logic [KSplit-1:0] k_lo_q;
   logic [KW-KSplit-1:0] k_hi_q;
   always_ff @(posedge clk_i) begin
-    {k_hi_q, k_lo_q} <= k_of(cfg_uniqueness_i);
+    {k_hi_q, k_lo_q} <= k_rom[cfg_uniqueness_i];
   end
 
   // ---- valid pipeline and the per-pixel side signals ------------------------------------
@@ -155,18 +155,22 @@ module scw_disparity_decide #(
   end
   assign valid_o = valid_q[Latency-1];
 
-  // {region, texture rejected} travels beside the tree; the SADs wait for the uniqueness
-  // compare in stage C. Plain shifts without reset, so they map to SRLs.
+  // {region, texture rejected} travels beside the tree, plain shifts without reset, so they
+  // map to SRLs. The SADs wait for the uniqueness compare in stage C in a ring of distributed
+  // RAM (SadW bits, TreeStages + 3 clocks: 6,885 bits at 45 candidates of 17 bits, which a
+  // shift chain made a simulator copy at every clock).
   logic tex_rej;
   logic [2*TreeStages-1:0] side_q;
-  logic [(TreeStages+3)*SadW-1:0] sads_q;
+  logic [SadW-1:0] sads_late;  // sad_i of TreeStages + 3 clocks before
   logic [TreeStages*NumW-1:0] limit_q;
   assign tex_rej = tex_all_q || (tex_en_q && texture_i < tex_q);
   always_ff @(posedge clk_i) begin
     side_q <= (2 * TreeStages)'({side_q, region_i, tex_rej});
     limit_q <= (TreeStages * NumW)'({limit_q, limit_i});
-    sads_q <= ((TreeStages + 3) * SadW)'({sads_q, sad_i});
   end
+  scw_delay_ring #(.Width(SadW), .Depth(TreeStages + 3)) u_sads (
+    .clk_i, .rst_ni, .en_i(1'b1), .d_i(sad_i), .q_o(sads_late)
+  );
 
   // ---- t1 .. tT: argmin tree ------------------------------------------------------------
   typedef struct packed {
@@ -350,14 +354,13 @@ module scw_disparity_decide #(
   logic [SadBits:0] d_s1;
   assign d_s1 = div_step(c_r_q, c_mx_q);
 
-  // The SADs leave their shift register into plain registers here (an SRL's clock-to-out is
-  // slow), those of candidates the uniqueness test skips as all ones, above every thresh.
-  logic [NumDisp*ThrW-1:0] d_sad_q;
+  // The SADs leave their ring's output register into plain registers here, those of
+  // candidates the uniqueness test skips as all ones, above every thresh. One word a
+  // candidate, so that a simulator compares them without cutting a wide vector.
+  logic [ThrW-1:0] d_sad_q [NumDisp];
   for (genvar d = 0; d < NumDisp; d++) begin : gen_dsad
     always_ff @(posedge clk_i) begin
-      d_sad_q[d*ThrW +: ThrW] <= c_far_q[d] ? ThrW'(sads_q[(TreeStages+2)*SadW + d*SadBits +:
-                                                           SadBits])
-                                            : '1;
+      d_sad_q[d] <= c_far_q[d] ? ThrW'(sads_late[d*SadBits +: SadBits]) : '1;
     end
   end
 
@@ -387,7 +390,7 @@ module scw_disparity_decide #(
   // compares side by side instead of a subtraction and a compare behind it.
   logic [NumDisp-1:0] urej, e_urej_q;
   for (genvar d = 0; d < NumDisp; d++) begin : gen_urej
-    assign urej[d] = d_sad_q[d*ThrW +: ThrW] <= d_thresh_q;
+    assign urej[d] = d_sad_q[d] <= d_thresh_q;
   end
 
   logic [DispW-1:0] e_d_q, e_dm1_q;

@@ -81,14 +81,14 @@ module scw_disparity_sums #(
   localparam int unsigned HistPx  = NumDisp - 1;     // right pixels kept from earlier beats
   localparam int unsigned WinPx   = NumDisp + Ppc - 1;  // candidate window of a beat
   localparam int unsigned CW      = Ppc * NumDisp * ColBits;  // column sums of one beat
-  localparam int unsigned Back    = (Window + Ppc - 1) / Ppc;  // beats kept for C(x - N)
   localparam int unsigned XW      = WW + 2;           // signed column arithmetic
 
   if (Ppc != 1 && Ppc != 2 && Ppc != 4) begin : gen_bad_ppc
     $error("scw_disparity_sums: Ppc must be 1, 2 or 4");
   end
-  if (Window % 2 != 1 || Window < 3 || NumDisp < 2 || MaxWidthPx % Ppc != 0) begin : gen_bad
-    $error("scw_disparity_sums: need an odd Window >= 3, NumDisp >= 2, MaxWidthPx %% Ppc == 0");
+  if (Window % 2 != 1 || Window < 3 || Window < Ppc || NumDisp < 2 || MaxWidthPx % Ppc != 0)
+  begin : gen_bad
+    $error("scw_disparity_sums: need an odd Window >= 3, >= Ppc, NumDisp >= 2, Ppc | MaxWidthPx");
   end
 
   // ---- configuration ---------------------------------------------------------------------
@@ -327,47 +327,39 @@ module scw_disparity_sums #(
   end
 
   // ---- c5: D = C(x) - C(x - N) -------------------------------------------------------------
-  // back_q holds the column sums of the last Back beats, newest first: C(x - N) of lane i is
-  // lane (i - N) mod Ppc of the beat ceil((N - i) / Ppc) back. Whole beats are shifted with
-  // enable and without reset (SRLs); gone_q takes the tap a beat in c5 needs one clock ahead,
-  // from the shift register as it will be after the edge, so the subtraction starts at a
-  // plain register rather than at an SRL's slow output. Lanes before column N subtract 0.
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [Back*CW-1:0] back_q, back_next;
-  logic [Back*Ppc*ColBits-1:0] tback_q, tback_next;
-  /* verilator lint_on UNUSEDSIGNAL */
-  if (Back == 1) begin : gen_back1
-    assign back_next  = v_q[5] ? csum_q : back_q;
-    assign tback_next = v_q[5] ? tsum_q : tback_q;
-  end else begin : gen_back
-    assign back_next  = v_q[5] ? {back_q[(Back-1)*CW-1:0], csum_q} : back_q;
-    assign tback_next = v_q[5] ? {tback_q[(Back-1)*Ppc*ColBits-1:0], tsum_q} : tback_q;
-  end
-  always_ff @(posedge clk_i) begin
-    if (v_q[5]) begin
-      back_q  <= back_next;
-      tback_q <= tback_next;
-    end
-  end
-
+  // C(x - N) of lane i is lane (i - N) mod Ppc of the beat ceil((N - i) / Ppc) back. Each lane
+  // keeps the one lane it needs, column and texture sums, in a delay line of that many beats
+  // moved by the c5 valid, ending in a plain register (gone_q: the subtraction starts at a
+  // flip-flop). A line of two beats or more is a ring of distributed RAM (scw_delay_ring):
+  // 21 beats of 598 bits at the thesis's P = 1, which as a shift register of whole beats made a
+  // simulator copy 12,285 bits at every beat and cost a 7-series part 598 SRLs where the ring
+  // takes 100 RAM32M. Lanes before column N subtract 0.
   // Lane i, candidate k (k = NumDisp: the texture sum) at [(i * K + k) * SadBits +: SadBits].
   localparam int unsigned K  = NumDisp + 1;
   localparam int unsigned KW = Ppc * K * SadBits;
-  logic [Ppc*K*ColBits-1:0] gone_d, gone_q;
+  logic [Ppc*K*ColBits-1:0] gone;  // each lane's delay line's output register
   logic [KW-1:0] delta_d, delta_q;
   logic [WW-1:0] x5;
   assign x5 = WW'(col5_q) * WW'(Ppc);
   for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c5
     localparam int unsigned BackBeats = (Window - i + Ppc - 1) / Ppc;
     localparam int unsigned BackLane  = BackBeats * Ppc + i - Window;
-    localparam int unsigned TB = (BackBeats - 1) * Ppc * ColBits + BackLane * ColBits;
     logic leaves;  // x >= N
     assign leaves = (x5 + WW'(i)) >= WW'(Window);
-    for (genvar d = 0; d < NumDisp; d++) begin : gen_cand
-      localparam int unsigned JB = (BackBeats - 1) * CW + (BackLane * NumDisp + d) * ColBits;
-      assign gone_d[(i*K + d)*ColBits +: ColBits] = back_next[JB +: ColBits];
+    logic [K*ColBits-1:0] keep;  // lane BackLane of the beat in c5: what lane i will subtract
+    assign keep = {tsum_q[BackLane*ColBits +: ColBits],
+                   csum_q[BackLane*NumDisp*ColBits +: NumDisp*ColBits]};
+    logic [K*ColBits-1:0] gone_q;
+    if (BackBeats == 1) begin : gen_reg
+      always_ff @(posedge clk_i) begin
+        if (v_q[5]) gone_q <= keep;
+      end
+    end else begin : gen_ring
+      scw_delay_ring #(.Width(K * ColBits), .Depth(BackBeats)) u_back (
+        .clk_i, .rst_ni, .en_i(v_q[5]), .d_i(keep), .q_o(gone_q)
+      );
     end
-    assign gone_d[(i*K + NumDisp)*ColBits +: ColBits] = tback_next[TB +: ColBits];
+    assign gone[i*K*ColBits +: K*ColBits] = gone_q;
     for (genvar k = 0; k < K; k++) begin : gen_delta
       logic [ColBits-1:0] c;
       if (k < NumDisp) begin : gen_c
@@ -376,13 +368,10 @@ module scw_disparity_sums #(
         assign c = tsum_q[i*ColBits +: ColBits];
       end
       assign delta_d[(i*K + k)*SadBits +: SadBits] =
-          SadBits'(c) - (leaves ? SadBits'(gone_q[(i*K + k)*ColBits +: ColBits]) : '0);
+          SadBits'(c) - (leaves ? SadBits'(gone[(i*K + k)*ColBits +: ColBits]) : '0);
     end
   end
-  always_ff @(posedge clk_i) begin
-    gone_q  <= gone_d;
-    delta_q <= delta_d;
-  end
+  always_ff @(posedge clk_i) delta_q <= delta_d;
 
   // ---- p1 .. pK: prefix sums across the lanes ----------------------------------------------
   // Level l: a lane with bit l set adds the last lane of the block of 2^l lanes before it.

@@ -11,7 +11,7 @@
 //   R1 .. R(RL)     the distance rule (scw_warning_rule): the disparity dq that places the
 //                   object, from its area, sum d, sum d^2 and d_max; beside it the word's
 //                   fields (a status word's in the same bits), its flags and too_close
-//                   (d_max >= d_limit), delayed (scw_warning_ring)
+//                   (d_max >= d_limit), delayed (scw_delay_ring)
 //   S0              the fields and flags, measurable (dq), and the reciprocal table read at
 //                   min(dq, table end) (scw_warning_recip; its output register holds the entry
 //                   in S1)
@@ -148,7 +148,7 @@ module scw_warning #(
   logic [FW-1:0] r_fields;
   logic [49:0] r_road;
   logic r_status, r_last, r_tc;
-  scw_warning_ring #(.Width(FW + 53), .Depth(RuleLatency)) u_rule_delay (
+  scw_delay_ring #(.Width(FW + 53), .Depth(RuleLatency)) u_rule_delay (
     .clk_i, .rst_ni, .en_i(en), .d_i({road_w, in_status, in_last_i, desc.d_max >= d_limit_q, fields}),
     .q_o({r_road, r_status, r_last, r_tc, r_fields})
   );
@@ -188,7 +188,7 @@ module scw_warning #(
 
   logic [FW-1:0] w_fields;
   logic w_status, w_last;
-  scw_warning_ring #(.Width(FW + 2), .Depth(ObjStages - 1)) u_word_delay (
+  scw_delay_ring #(.Width(FW + 2), .Depth(ObjStages - 1)) u_word_delay (
     .clk_i, .rst_ni, .en_i(en), .d_i({s0_status_q, s0_last_q, s0_fields_q}),
     .q_o({w_status, w_last, w_fields})
   );
