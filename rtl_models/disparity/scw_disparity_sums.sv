@@ -246,44 +246,42 @@ module scw_disparity_sums #(
 
   // The differences leave c2 already gated, so that c3 is a plain three-input add: a right
   // pixel left of column 0 gives C = 0 (everything gated), the first row restarts C (no kept
-  // sum), the leaving row exists only from row N on.
-  logic [Ppc*NumDisp*PixW-1:0] dnew_d, dold_d, dnew_q, dold_q;
-  logic [Ppc*NumDisp-1:0] keep_d, keep_q;  // add the kept column sum
-  logic [Ppc*PixW-1:0] tnew_d, told_d, tnew_q, told_q;
+  // sum), the leaving row exists only from row N on. From here to the window sums every
+  // candidate's value is a word of its own (an unpacked array, J = i * NumDisp + d), not a
+  // field of one wide vector: the same registers, but a simulator then adds words instead of
+  // cutting and splicing fields of a 585-bit vector at every clock (that cutting was a third of
+  // the thesis P = 4 pipeline's Verilated time).
+  logic [PixW-1:0] dnew_q [Ppc*NumDisp];
+  logic [PixW-1:0] dold_q [Ppc*NumDisp];
+  logic [Ppc*NumDisp-1:0] keep_q;  // add the kept column sum
+  logic [PixW-1:0] tnew_q [Ppc];
+  logic [PixW-1:0] told_q [Ppc];
   logic keep_t_q;
   for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c3
     logic [PixW-1:0] l_new, l_old;
     assign l_new   = left3_q[i*PixW +: PixW];
     assign l_old   = lold3_q[i*PixW +: PixW];
-    assign tnew_d[i*PixW +: PixW] = (l_new > PixW'(cap_q)) ? l_new - PixW'(cap_q)
-                                                           : PixW'(cap_q) - l_new;
-    assign told_d[i*PixW +: PixW] = !full3_q ? '0
-                                  : (l_old > PixW'(cap_q)) ? l_old - PixW'(cap_q)
-                                                           : PixW'(cap_q) - l_old;
+    always_ff @(posedge clk_i) begin
+      tnew_q[i] <= (l_new > PixW'(cap_q)) ? l_new - PixW'(cap_q) : PixW'(cap_q) - l_new;
+      told_q[i] <= !full3_q ? '0
+                 : (l_old > PixW'(cap_q)) ? l_old - PixW'(cap_q) : PixW'(cap_q) - l_old;
+    end
     for (genvar d = 0; d < NumDisp; d++) begin : gen_cand
+      localparam int unsigned J = i * NumDisp + d;
       logic [PixW-1:0] r_new, r_old;
       assign r_new = wnew_q[(Ppc - 1 - i + d)*PixW +: PixW];
       assign r_old = wold_q[(Ppc - 1 - i + d)*PixW +: PixW];
       logic mask;  // the right pixel is left of column 0
       assign mask = xr3_q < XW'(d - i);  // x0 + i - dmin < d
-      assign dnew_d[(i*NumDisp + d)*PixW +: PixW] = mask ? '0
-                                                  : (l_new > r_new) ? l_new - r_new
-                                                                    : r_new - l_new;
-      assign dold_d[(i*NumDisp + d)*PixW +: PixW] = (mask || !full3_q) ? '0
-                                                  : (l_old > r_old) ? l_old - r_old
-                                                                    : r_old - l_old;
-      assign keep_d[i*NumDisp + d] = !mask && !first3_q;
+      always_ff @(posedge clk_i) begin
+        dnew_q[J] <= mask ? '0 : (l_new > r_new) ? l_new - r_new : r_new - l_new;
+        dold_q[J] <= (mask || !full3_q) ? '0 : (l_old > r_old) ? l_old - r_old : r_old - l_old;
+        keep_q[J] <= !mask && !first3_q;
+      end
     end
   end
 
-  always_ff @(posedge clk_i) begin
-    dnew_q <= dnew_d;
-    dold_q <= dold_d;
-    keep_q <= keep_d;
-    tnew_q <= tnew_d;
-    told_q <= told_d;
-    keep_t_q <= !first3_q;
-  end
+  always_ff @(posedge clk_i) keep_t_q <= !first3_q;
 
   // ---- column-sum RAMs: read in c2 (output register in c3), written in c4 -----------------
   // A block RAM is at most 72 bits wide, so the words past a power of two take as many block
@@ -293,8 +291,8 @@ module scw_disparity_sums #(
   localparam int unsigned ColsPow2  = (Cols > 1) ? (1 << ($clog2(Cols) - 1)) : 1;
   localparam int unsigned ColsBlock = (ColsPow2 >= 512 && Cols - ColsPow2 <= ColsPow2 / 4 &&
                                        Cols > ColsPow2) ? ColsPow2 : Cols;
-  logic [CW-1:0] csum_rd, csum_rd_q, csum_d, csum_q;
-  logic [Ppc*ColBits-1:0] tsum_rd, tsum_rd_q, tsum_d, tsum_q;
+  logic [CW-1:0] csum_rd, csum_rd_q, csum_d;
+  logic [Ppc*ColBits-1:0] tsum_rd, tsum_rd_q, tsum_d;
   scw_ram_sdp #(.Width(CW), .Depth(Cols), .BlockDepth(ColsBlock)) u_col_sums (
     .clk_i, .wr_en_i(v_q[4]), .wr_addr_i(col4_q), .wr_data_i(csum_d),
     .rd_en_i(v_q[2]), .rd_addr_i(col2_q), .rd_data_o(csum_rd)
@@ -309,21 +307,23 @@ module scw_disparity_sums #(
   end
 
   // ---- c4: column sums ---------------------------------------------------------------------
+  // Written to the RAM as one word (csum_d), registered one word a candidate (csum_q).
+  logic [ColBits-1:0] csum_q [Ppc*NumDisp];
+  logic [ColBits-1:0] tsum_q [Ppc];
   for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c4
     for (genvar d = 0; d < NumDisp; d++) begin : gen_cand
       localparam int unsigned J = i * NumDisp + d;
-      assign csum_d[J*ColBits +: ColBits] =
-          (keep_q[J] ? csum_rd_q[J*ColBits +: ColBits] : '0) +
-          ColBits'(dnew_q[J*PixW +: PixW]) - ColBits'(dold_q[J*PixW +: PixW]);
+      logic [ColBits-1:0] c;
+      assign c = (keep_q[J] ? csum_rd_q[J*ColBits +: ColBits] : '0) +
+                 ColBits'(dnew_q[J]) - ColBits'(dold_q[J]);
+      assign csum_d[J*ColBits +: ColBits] = c;
+      always_ff @(posedge clk_i) csum_q[J] <= c;
     end
-    assign tsum_d[i*ColBits +: ColBits] = (keep_t_q ? tsum_rd_q[i*ColBits +: ColBits] : '0) +
-                                          ColBits'(tnew_q[i*PixW +: PixW]) -
-                                          ColBits'(told_q[i*PixW +: PixW]);
-  end
-
-  always_ff @(posedge clk_i) begin
-    csum_q <= csum_d;
-    tsum_q <= tsum_d;
+    logic [ColBits-1:0] t;
+    assign t = (keep_t_q ? tsum_rd_q[i*ColBits +: ColBits] : '0) +
+               ColBits'(tnew_q[i]) - ColBits'(told_q[i]);
+    assign tsum_d[i*ColBits +: ColBits] = t;
+    always_ff @(posedge clk_i) tsum_q[i] <= t;
   end
 
   // ---- c5: D = C(x) - C(x - N) -------------------------------------------------------------
@@ -334,11 +334,9 @@ module scw_disparity_sums #(
   // 21 beats of 598 bits at the thesis's P = 1, which as a shift register of whole beats made a
   // simulator copy 12,285 bits at every beat and cost a 7-series part 598 SRLs where the ring
   // takes 100 RAM32M. Lanes before column N subtract 0.
-  // Lane i, candidate k (k = NumDisp: the texture sum) at [(i * K + k) * SadBits +: SadBits].
+  // Lane i, candidate k (k = NumDisp: the texture sum) at index i * K + k from here on.
   localparam int unsigned K  = NumDisp + 1;
-  localparam int unsigned KW = Ppc * K * SadBits;
-  logic [Ppc*K*ColBits-1:0] gone;  // each lane's delay line's output register
-  logic [KW-1:0] delta_d, delta_q;
+  logic [SadBits-1:0] delta_q [Ppc*K];
   logic [WW-1:0] x5;
   assign x5 = WW'(col5_q) * WW'(Ppc);
   for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c5
@@ -347,9 +345,11 @@ module scw_disparity_sums #(
     logic leaves;  // x >= N
     assign leaves = (x5 + WW'(i)) >= WW'(Window);
     logic [K*ColBits-1:0] keep;  // lane BackLane of the beat in c5: what lane i will subtract
-    assign keep = {tsum_q[BackLane*ColBits +: ColBits],
-                   csum_q[BackLane*NumDisp*ColBits +: NumDisp*ColBits]};
-    logic [K*ColBits-1:0] gone_q;
+    for (genvar d = 0; d < NumDisp; d++) begin : gen_keep
+      assign keep[d*ColBits +: ColBits] = csum_q[BackLane*NumDisp + d];
+    end
+    assign keep[NumDisp*ColBits +: ColBits] = tsum_q[BackLane];
+    logic [K*ColBits-1:0] gone_q;  // each lane's delay line's output register
     if (BackBeats == 1) begin : gen_reg
       always_ff @(posedge clk_i) begin
         if (v_q[5]) gone_q <= keep;
@@ -359,61 +359,68 @@ module scw_disparity_sums #(
         .clk_i, .rst_ni, .en_i(v_q[5]), .d_i(keep), .q_o(gone_q)
       );
     end
-    assign gone[i*K*ColBits +: K*ColBits] = gone_q;
     for (genvar k = 0; k < K; k++) begin : gen_delta
       logic [ColBits-1:0] c;
       if (k < NumDisp) begin : gen_c
-        assign c = csum_q[(i*NumDisp + k)*ColBits +: ColBits];
+        assign c = csum_q[i*NumDisp + k];
       end else begin : gen_t
-        assign c = tsum_q[i*ColBits +: ColBits];
+        assign c = tsum_q[i];
       end
-      assign delta_d[(i*K + k)*SadBits +: SadBits] =
-          SadBits'(c) - (leaves ? SadBits'(gone[(i*K + k)*ColBits +: ColBits]) : '0);
+      always_ff @(posedge clk_i) begin
+        delta_q[i*K + k] <= SadBits'(c) - (leaves ? SadBits'(gone_q[k*ColBits +: ColBits]) : '0);
+      end
     end
   end
-  always_ff @(posedge clk_i) delta_q <= delta_d;
 
   // ---- p1 .. pK: prefix sums across the lanes ----------------------------------------------
   // Level l: a lane with bit l set adds the last lane of the block of 2^l lanes before it.
-  logic [(PreStages+1)*KW-1:0] pre;  // level l at [l*KW +: KW]
-  assign pre[KW-1:0] = delta_q;
-  for (genvar l = 0; l < PreStages; l++) begin : gen_pre
-    logic [KW-1:0] nxt, nxt_q;
-    for (genvar i = 0; i < Ppc; i++) begin : gen_lane
-      localparam int unsigned From = ((i >> l) << l) - 1;
-      for (genvar k = 0; k < K; k++) begin : gen_k
-        if (((i >> l) & 1) != 0) begin : gen_add
-          assign nxt[(i*K + k)*SadBits +: SadBits] = pre[l*KW + (i*K + k)*SadBits +: SadBits] +
-                                                     pre[l*KW + (From*K + k)*SadBits +: SadBits];
-        end else begin : gen_keep
-          assign nxt[(i*K + k)*SadBits +: SadBits] = pre[l*KW + (i*K + k)*SadBits +: SadBits];
+  // Level 0 is delta_q, level l + 1 the registered sums of level l (each reads the one below
+  // by name, as Yosys 0.23 needs).
+  for (genvar l = 0; l <= PreStages; l++) begin : gen_pre
+    logic [SadBits-1:0] v [Ppc*K];
+    if (l == 0) begin : gen_delta
+      for (genvar j = 0; j < Ppc * K; j++) begin : gen_j
+        assign v[j] = delta_q[j];
+      end
+    end else begin : gen_sum
+      for (genvar i = 0; i < Ppc; i++) begin : gen_lane
+        localparam int unsigned From = ((i >> (l - 1)) << (l - 1)) - 1;
+        for (genvar k = 0; k < K; k++) begin : gen_k
+          if (((i >> (l - 1)) & 1) != 0) begin : gen_add
+            always_ff @(posedge clk_i) begin
+              v[i*K + k] <= gen_pre[l-1].v[i*K + k] + gen_pre[l-1].v[From*K + k];
+            end
+          end else begin : gen_keep
+            always_ff @(posedge clk_i) v[i*K + k] <= gen_pre[l-1].v[i*K + k];
+          end
         end
       end
     end
-    always_ff @(posedge clk_i) nxt_q <= nxt;
-    assign pre[(l+1)*KW +: KW] = nxt_q;
   end
 
   // ---- s: window sums ----------------------------------------------------------------------
-  logic [K*SadBits-1:0] run_q;  // S of the previous beat's last lane
-  logic [KW-1:0] s_d, s_q;
+  logic [SadBits-1:0] run_q [K];  // S of the previous beat's last lane
+  logic [SadBits-1:0] s_q [Ppc*K];
   logic first;
   assign first = first_q[Latency-1];
   for (genvar i = 0; i < Ppc; i++) begin : gen_lane_s
     for (genvar k = 0; k < K; k++) begin : gen_k
-      assign s_d[(i*K + k)*SadBits +: SadBits] =
-          (first ? '0 : run_q[k*SadBits +: SadBits]) +
-          pre[PreStages*KW + (i*K + k)*SadBits +: SadBits];
+      logic [SadBits-1:0] s_d;
+      assign s_d = (first ? '0 : run_q[k]) + gen_pre[PreStages].v[i*K + k];
+      always_ff @(posedge clk_i) s_q[i*K + k] <= s_d;
+      if (i == Ppc - 1) begin : gen_run
+        always_ff @(posedge clk_i) begin
+          if (v_q[Latency-1]) run_q[k] <= s_d;
+        end
+      end
     end
-  end
-  always_ff @(posedge clk_i) begin
-    if (v_q[Latency-1]) run_q <= s_d[(Ppc-1)*K*SadBits +: K*SadBits];
-    s_q <= s_d;
   end
 
   for (genvar i = 0; i < Ppc; i++) begin : gen_out
-    assign sad_o[i*NumDisp*SadBits +: NumDisp*SadBits] = s_q[i*K*SadBits +: NumDisp*SadBits];
-    assign texture_o[i*SadBits +: SadBits] = s_q[(i*K + NumDisp)*SadBits +: SadBits];
+    for (genvar d = 0; d < NumDisp; d++) begin : gen_sad
+      assign sad_o[(i*NumDisp + d)*SadBits +: SadBits] = s_q[i*K + d];
+    end
+    assign texture_o[i*SadBits +: SadBits] = s_q[i*K + NumDisp];
   end
   assign valid_o = v_q[Latency];
   assign tag_o   = tag_q[(Latency-1)*TagBits +: TagBits];
