@@ -307,23 +307,28 @@ module scw_disparity_sums #(
   end
 
   // ---- c4: column sums ---------------------------------------------------------------------
-  // Written to the RAM as one word (csum_d), registered one word a candidate (csum_q).
+  // Written to the RAM as one word (csum_d), registered one word a candidate (csum_q). The word
+  // is packed by a loop: field by field assigns a simulator merges into one concatenation,
+  // which Verilator 5.006 builds through a temporary a field longer at each step (quadratic
+  // in the word: 180 fields at P = 4).
+  logic [ColBits-1:0] csum_c [Ppc*NumDisp];
   logic [ColBits-1:0] csum_q [Ppc*NumDisp];
+  logic [ColBits-1:0] tsum_c [Ppc];
   logic [ColBits-1:0] tsum_q [Ppc];
   for (genvar i = 0; i < Ppc; i++) begin : gen_lane_c4
     for (genvar d = 0; d < NumDisp; d++) begin : gen_cand
       localparam int unsigned J = i * NumDisp + d;
-      logic [ColBits-1:0] c;
-      assign c = (keep_q[J] ? csum_rd_q[J*ColBits +: ColBits] : '0) +
-                 ColBits'(dnew_q[J]) - ColBits'(dold_q[J]);
-      assign csum_d[J*ColBits +: ColBits] = c;
-      always_ff @(posedge clk_i) csum_q[J] <= c;
+      assign csum_c[J] = (keep_q[J] ? csum_rd_q[J*ColBits +: ColBits] : '0) +
+                         ColBits'(dnew_q[J]) - ColBits'(dold_q[J]);
+      always_ff @(posedge clk_i) csum_q[J] <= csum_c[J];
     end
-    logic [ColBits-1:0] t;
-    assign t = (keep_t_q ? tsum_rd_q[i*ColBits +: ColBits] : '0) +
-               ColBits'(tnew_q[i]) - ColBits'(told_q[i]);
-    assign tsum_d[i*ColBits +: ColBits] = t;
-    always_ff @(posedge clk_i) tsum_q[i] <= t;
+    assign tsum_c[i] = (keep_t_q ? tsum_rd_q[i*ColBits +: ColBits] : '0) +
+                       ColBits'(tnew_q[i]) - ColBits'(told_q[i]);
+    always_ff @(posedge clk_i) tsum_q[i] <= tsum_c[i];
+  end
+  always_comb begin
+    for (int j = 0; j < Ppc * NumDisp; j++) csum_d[j*ColBits +: ColBits] = csum_c[j];
+    for (int i = 0; i < Ppc; i++) tsum_d[i*ColBits +: ColBits] = tsum_c[i];
   end
 
   // ---- c5: D = C(x) - C(x - N) -------------------------------------------------------------
@@ -416,11 +421,11 @@ module scw_disparity_sums #(
     end
   end
 
-  for (genvar i = 0; i < Ppc; i++) begin : gen_out
-    for (genvar d = 0; d < NumDisp; d++) begin : gen_sad
-      assign sad_o[(i*NumDisp + d)*SadBits +: SadBits] = s_q[i*K + d];
+  always_comb begin  // packed by a loop, as csum_d
+    for (int i = 0; i < Ppc; i++) begin
+      for (int d = 0; d < NumDisp; d++) sad_o[(i*NumDisp + d)*SadBits +: SadBits] = s_q[i*K + d];
+      texture_o[i*SadBits +: SadBits] = s_q[i*K + NumDisp];
     end
-    assign texture_o[i*SadBits +: SadBits] = s_q[i*K + NumDisp];
   end
   assign valid_o = v_q[Latency];
   assign tag_o   = tag_q[(Latency-1)*TagBits +: TagBits];

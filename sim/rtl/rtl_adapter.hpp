@@ -48,7 +48,9 @@ inline constexpr bool has_out_flags = has_out_sof<M>::value || has_out_last<M>::
     static void drive(VM& m, bool valid, const Beat& beat) {                            \
       using Layout = ::scw::sim::BeatLayout<Beat>;                                      \
       m.P##_valid_i = valid;                                                            \
-      Layout::payload(beat).to_port(m.P##_data_i);                                      \
+      /* Data without valid is don't-care to the RTL: packing it anyway cost a heap */  \
+      /* word a clock for the idle labelling word. The port keeps the last beat.    */  \
+      if (valid) Layout::payload(beat).to_port(m.P##_data_i);                           \
       if constexpr (::scw::hls::detail::has_last<Beat>::value) {                        \
         m.P##_last_i = beat.last;                                                       \
       } else {                                                                          \
@@ -88,7 +90,7 @@ void drive_stage_in(VM& m, bool in_valid, const In& in, bool out_ready) {
     StageInPorts::drive(m, in_valid, in);
   } else {
     m.in_valid_i = in_valid;
-    pack(in).to_port(m.in_data_i);
+    if (in_valid) pack(in).to_port(m.in_data_i);  // as StageInPorts: no packing without valid
   }
   m.out_ready_i = out_ready;
 }
