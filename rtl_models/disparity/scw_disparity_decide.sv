@@ -162,11 +162,19 @@ module scw_disparity_decide #(
   logic tex_rej;
   logic [2*TreeStages-1:0] side_q;
   logic [SadW-1:0] sads_late;  // sad_i of TreeStages + 3 clocks before
-  logic [TreeStages*NumW-1:0] limit_q;
   assign tex_rej = tex_all_q || (tex_en_q && texture_i < tex_q);
   always_ff @(posedge clk_i) begin
     side_q <= (2 * TreeStages)'({side_q, region_i, tex_rej});
-    limit_q <= (TreeStages * NumW)'({limit_q, limit_i});
+  end
+  // The limit ends in a flip-flop, not at an SRL's slow clock-to-out: it starts stage A's
+  // compares (the sub-pixel fit's last candidate), 3,655 ps from an SRL in the thesis-size stage.
+  logic [NumW-1:0] t_limit_q;
+  if (TreeStages > 1) begin : gen_limit_line
+    logic [(TreeStages-1)*NumW-1:0] line_q;
+    always_ff @(posedge clk_i) line_q <= ((TreeStages - 1) * NumW)'({line_q, limit_i});
+    (* keep *) always_ff @(posedge clk_i) t_limit_q <= line_q[(TreeStages-1)*NumW-1 -: NumW];
+  end else begin : gen_limit_reg
+    (* keep *) always_ff @(posedge clk_i) t_limit_q <= limit_i;
   end
   scw_delay_ring #(.Width(SadW), .Depth(TreeStages + 3)) u_sads (
     .clk_i, .rst_ni, .en_i(1'b1), .d_i(sad_i), .q_o(sads_late)
@@ -242,7 +250,7 @@ module scw_disparity_decide #(
   logic [NumW-1:0] t_limit;
   assign root = gen_lvl[Levels].v[0];
   assign {t_region, t_tex_rej} = side_q[2*TreeStages-1 -: 2];
-  assign t_limit = limit_q[TreeStages*NumW-1 -: NumW];
+  assign t_limit = t_limit_q;
 
   // ---- A: products, limits, the uniqueness mask, sub-pixel set-up -----------------------
   logic [NumDisp-1:0] far;

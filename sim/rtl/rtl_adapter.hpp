@@ -41,27 +41,27 @@ inline constexpr bool has_out_flags = has_out_sof<M>::value || has_out_last<M>::
 }  // namespace detail
 
 /// Binds an input port group P_valid_i/P_ready_o/P_data_i with the beat's flags on P_sof_i and
-/// P_eol_i (a pixel beat) or on P_last_i (a packet): SCW_IN_PORTS(MapPorts, map).
-#define SCW_IN_PORTS(NAME, P)                                                           \
-  struct NAME {                                                                         \
-    template <typename VM, typename Beat>                                               \
-    static void drive(VM& m, bool valid, const Beat& beat) {                            \
-      using Layout = ::scw::sim::BeatLayout<Beat>;                                      \
-      m.P##_valid_i = valid;                                                            \
-      /* Data without valid is don't-care to the RTL: packing it anyway cost a heap */  \
-      /* word a clock for the idle labelling word. The port keeps the last beat.    */  \
-      if (valid) Layout::payload(beat).to_port(m.P##_data_i);                           \
-      if constexpr (::scw::hls::detail::has_last<Beat>::value) {                        \
-        m.P##_last_i = beat.last;                                                       \
-      } else {                                                                          \
-        m.P##_sof_i = Layout::sof(beat);                                                \
-        m.P##_eol_i = Layout::eol(beat);                                                \
-      }                                                                                 \
-    }                                                                                   \
-    template <typename VM>                                                              \
-    static bool ready(const VM& m) {                                                    \
-      return m.P##_ready_o;                                                             \
-    }                                                                                   \
+/// P_eol_i (a pixel beat) or on P_last_i (a packet): SCW_IN_PORTS(MapPorts, map). The data is
+/// packed only with valid (without it the RTL must not look at it, and the port keeps the last
+/// beat, as a register would): packing the idle labelling word cost a heap allocation a clock.
+#define SCW_IN_PORTS(NAME, P)                                    \
+  struct NAME {                                                  \
+    template <typename VM, typename Beat>                        \
+    static void drive(VM& m, bool valid, const Beat& beat) {     \
+      using Layout = ::scw::sim::BeatLayout<Beat>;               \
+      m.P##_valid_i = valid;                                     \
+      if (valid) Layout::payload(beat).to_port(m.P##_data_i);    \
+      if constexpr (::scw::hls::detail::has_last<Beat>::value) { \
+        m.P##_last_i = beat.last;                                \
+      } else {                                                   \
+        m.P##_sof_i = Layout::sof(beat);                         \
+        m.P##_eol_i = Layout::eol(beat);                         \
+      }                                                          \
+    }                                                            \
+    template <typename VM>                                       \
+    static bool ready(const VM& m) {                             \
+      return m.P##_ready_o;                                      \
+    }                                                            \
   }
 
 SCW_IN_PORTS(StageInPorts, in);
