@@ -59,8 +59,8 @@ cv::Mat run_built(const cv::Mat& left, const cv::Mat& right, const DisparityConf
   cv::Mat out(cfg.height, cfg.width, CV_16SC1);
   sim::FrameBeatsOut<typename Params::disp_beat> o(out.ptr<std::uint16_t>());
   const int n = cfg.width * cfg.height;
-  const long max_clocks = 4L * 3 * n + 100000;  // a frame takes n clocks and a few rows more
-  if (hls::disparity::disparity_frame(*kernel, l, r, o, n, max_clocks) != n || kernel->error()) {
+  if (hls::disparity::disparity_frame(*kernel, l, r, o, n, sim::frame_clock_limit(n)) != n ||
+      kernel->error()) {
     kernel.reset();
     throw std::logic_error("disparity_image: the stage stopped or flagged a frame error");
   }

@@ -32,8 +32,12 @@ void check_image(const cv::Mat& raw, int width, int height) {
 
 struct Rectifier::Stage {
   int width = 0, height = 0;
+  hls::rectify::RectifyConfig cfg{};
   std::unique_ptr<Kernel> kernel;  // line buffers: keep them off the stack
   std::vector<Kernel::map_type> points;
+  // A frame that fails leaves the kernel mid-frame: the next frame starts on a fresh one, as
+  // the disparity runner's does.
+  void restart() { kernel = std::make_unique<Kernel>(cfg); }
 };
 
 Rectifier::Rectifier(const FixedMap& map, int lead_rows) : stage_(std::make_unique<Stage>()) {
@@ -50,8 +54,8 @@ Rectifier::Rectifier(const FixedMap& map, int lead_rows) : stage_(std::make_uniq
                                 std::to_string(HostParams::kRows - 1));
   stage_->width = map.width;
   stage_->height = map.height;
-  stage_->kernel =
-      std::make_unique<Kernel>(hls::rectify::RectifyConfig{map.width, map.height, lead_rows});
+  stage_->cfg = hls::rectify::RectifyConfig{map.width, map.height, lead_rows};
+  stage_->restart();
   stage_->points = sim::frame_beats_of<Kernel::map_type>(map.points.data(), map.width, map.height);
 }
 
@@ -60,7 +64,7 @@ Rectifier::Rectifier(Rectifier&&) noexcept = default;
 Rectifier& Rectifier::operator=(Rectifier&&) noexcept = default;
 
 cv::Mat Rectifier::operator()(const cv::Mat& raw) {
-  const Stage& s = *stage_;
+  Stage& s = *stage_;
   check_image(raw, s.width, s.height);
   const cv::Mat img = raw.isContinuous() ? raw : raw.clone();
   const int n = static_cast<int>(s.points.size());
@@ -68,12 +72,15 @@ cv::Mat Rectifier::operator()(const cv::Mat& raw) {
   hls::ArrayIn<Kernel::map_type> points(s.points.data(), n);
   cv::Mat out(raw.rows, raw.cols, CV_8UC1);
   sim::FrameBeatsOut<Kernel::out_type> beats(out.ptr<std::uint8_t>());
-  const long max_clocks = 4L * 3 * n + 100000;  // a frame takes n clocks and a few rows more
-  if (hls::rectify::rectify_frame(*s.kernel, pixels, points, beats, n, max_clocks) != n)
+  if (hls::rectify::rectify_frame(*s.kernel, pixels, points, beats, n, sim::frame_clock_limit(n)) !=
+      n) {
+    s.restart();
     throw std::logic_error("rectify_image: the stage stopped producing output");
-  if (s.kernel->error() != 0)
-    throw std::logic_error("rectify_image: the stage flagged error bits " +
-                           std::to_string(s.kernel->error()));
+  }
+  if (const auto bits = s.kernel->error(); bits != 0) {
+    s.restart();
+    throw std::logic_error("rectify_image: the stage flagged error bits " + std::to_string(bits));
+  }
   return out;
 }
 

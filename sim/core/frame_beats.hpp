@@ -79,4 +79,9 @@ class FrameBeatsOut {
   T* values_;
 };
 
+/// The clocks a whole-frame top loop (rectify_frame, disparity_frame) may take for a frame of
+/// `beats` beats before the caller calls the stage stuck: a frame takes about `beats` clocks and
+/// a few rows more, so this bound is only ever reached by a stage that stopped.
+constexpr long frame_clock_limit(long beats) { return 4L * 3 * beats + 100000; }
+
 }  // namespace scw::sim
