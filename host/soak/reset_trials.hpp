@@ -28,8 +28,18 @@ struct ResetOptions {
   Progress progress;
 
   /// `trials` resets on the soak's frame size, seed, stalls, real pair and progress.
+  /// Named assignments, not an aggregate in field order: two int fields swapped would still
+  /// compile.
   static ResetOptions like(const SoakOptions& soak, int trials) {
-    return {trials, soak.seed, soak.width, soak.height, soak.stalls, soak.real, soak.progress};
+    ResetOptions r;
+    r.trials = trials;
+    r.seed = soak.seed;
+    r.width = soak.width;
+    r.height = soak.height;
+    r.stalls = soak.stalls;
+    r.real = soak.real;
+    r.progress = soak.progress;
+    return r;
   }
 };
 
@@ -47,8 +57,9 @@ struct ResetSummary {
 };
 
 /// Trial t: frames of soak content (seed and t), the top reset at a cycle drawn from the first
-/// three frames' span among those where the labelling stage is in the t-th of its activities, held in reset kMinResetHold .. 8 cycles. Throws std::invalid_argument for a frame
-/// size the small build cannot take.
+/// three frames' span among those where the labelling stage is in the t-th of its activities,
+/// held in reset kMinResetHold .. 8 cycles. Throws std::invalid_argument for a frame size the
+/// small build cannot take.
 ResetSummary run_reset_trials(const ResetOptions& o);
 
 }  // namespace scw::host::soak
