@@ -7,7 +7,9 @@
 # cycles per second and seconds per frame (docs/performance.md, "Simulation speed"):
 #   bench/sim_speed.sh BUILD_DIR [FRAMES] [REPEATS] [BASELINE_BUILD_DIR]
 # With BASELINE_BUILD_DIR (another build of scw, e.g. an older revision) its RTL runs are timed in
-# the same loop, so the two are compared on the same machine at the same moment.
+# the same loop, so the two are compared on the same machine at the same moment. The RTL runs
+# are also timed with SCW_SKIP_IDLE=0 (every cycle of every block evaluated, "rtl-all"), which
+# shows what skipping the idle blocks' still cycles gains (docs/sim.md).
 set -euo pipefail
 build="$(cd "${1:?usage: sim_speed.sh BUILD_DIR [FRAMES] [REPEATS] [BASELINE_BUILD_DIR]}" && pwd)"
 frames="${2:-3}"
@@ -30,7 +32,7 @@ has_rtl() {
 runs=()
 for p in 1 2 4; do runs+=("cpp $p $scw"); done
 for p in 1 2 4; do
-  if has_rtl "$scw" "$p"; then runs+=("rtl $p $scw"); fi
+  if has_rtl "$scw" "$p"; then runs+=("rtl $p $scw" "rtl-all $p $scw"); fi
   if [ -n "$base" ] && has_rtl "$base" "$p"; then runs+=("rtl $p $base"); fi
 done
 
@@ -40,12 +42,15 @@ for ((r = 1; r <= repeats; r++)); do
     read -r engine p bin <<<"$run"
     key="$engine $p $([ "$bin" = "$scw" ] && echo this || echo baseline)"
     t0="$(date +%s.%N)"
-    "$bin" sim --config thesis --ppc "$p" --frames "$frames" --engine "$engine" \
-      --json "$work/run.json" >/dev/null 2>&1
+    skip=1
+    [ "$engine" = rtl-all ] && skip=0
+    SCW_SKIP_IDLE="$skip" "$bin" sim --config thesis --ppc "$p" --frames "$frames" \
+      --engine "${engine%-all}" --json "$work/run.json" >/dev/null 2>&1
     t1="$(date +%s.%N)"
     s="$(awk -v a="$t0" -v b="$t1" 'BEGIN {print b - a}')"
     secs[$key]+="$s "
     cycles[$key]="$(grep -o '"cycles": *[0-9]*' "$work/run.json" | head -1 | tr -dc 0-9)"
+    cp "$work/run.json" "$work/${key// /_}.json"
     printf 'run %d  %-22s %8.2f s\n' "$r" "$key" "$s"
   done
 done
@@ -60,4 +65,15 @@ for run in "${runs[@]}"; do
   printf '  %-22s %10d %12.2f %12.0f %10.3f\n' "$key" "${cycles[$key]}" "$m" \
     "$(awk -v c="${cycles[$key]}" -v m="$m" 'BEGIN {print c / m}')" \
     "$(awk -v m="$m" -v f="$frames" 'BEGIN {print m / f}')"
+done
+# Skipping must change nothing: each RTL run's report against the one with every cycle evaluated.
+for p in 1 2 4; do
+  a="$work/rtl_${p}_this.json" b="$work/rtl-all_${p}_this.json"
+  [ -f "$a" ] || continue
+  if cmp -s "$a" "$b"; then
+    echo "P = $p: the same report (cycles, timing, results) with and without skipping"
+  else
+    echo "P = $p: the reports DIFFER with and without skipping" >&2
+    exit 1
+  fi
 done

@@ -33,6 +33,12 @@
 #include "Vpipe_p2_top_scw_pipeline.h"
 #include "Vpipe_warning.h"
 #include "Vpipe_warning_scw_warning.h"
+// Their whole state, for skipping the cycles in which they are still (Harness::settle): the
+// stages idle between frames.
+#include "Vpipe_merge__Syms.h"
+#include "Vpipe_warning__Syms.h"
+SCW_MODEL_STATE(Vpipe_merge)
+SCW_MODEL_STATE(Vpipe_warning)
 
 namespace scw::sim::small_build {
 

@@ -14,6 +14,12 @@
 #include "Vthesis_merge_scw_result_merge.h"
 #include "Vthesis_warning.h"
 #include "Vthesis_warning_scw_warning.h"
+// Their whole state, for skipping the cycles in which they are still (Harness::settle): the
+// stages idle between frames.
+#include "Vthesis_merge__Syms.h"
+#include "Vthesis_warning__Syms.h"
+SCW_MODEL_STATE(Vthesis_merge)
+SCW_MODEL_STATE(Vthesis_warning)
 // One beat width's blocks: Vthesis_p<P>_{check, grid, rectify, disparity, labelling}.
 #include "Vthesis_p1_check.h"
 #include "Vthesis_p1_check_scw_frame_check.h"

@@ -32,14 +32,21 @@ class ResultMergeRtl : public RtlAdapter<VM> {
                const hls::pipeline::FlagPacket& right, bool out_ready) {
     VM& m = this->dut();
     m.res_valid_i = res_valid;
-    BeatLayout<hls::warning::ResultPacket>::payload(res).to_port(m.res_data_i);
+    // Packed only with valid, as SCW_IN_PORTS: the port keeps the last result, as a register would.
+    if (res_valid) BeatLayout<hls::warning::ResultPacket>::payload(res).to_port(m.res_data_i);
     m.res_last_i = res.last;
     m.left_valid_i = left_valid;
     m.left_error_i = left.data.error;
     m.right_valid_i = right_valid;
     m.right_error_i = right.data.error;
     m.out_ready_i = out_ready;
-    auto o = settle_out<Outputs>(this->harness());
+    // The merge takes its three inputs together, on res_ready_o.
+    auto o = settle_out<Outputs>(this->harness(),
+                                 QuietKey::bits(res_valid, left_valid, right_valid, out_ready),
+                                 [&](const VM& d) {
+                                   const bool moved = d.res_ready_o || (d.out_valid_o && out_ready);
+                                   return moved ? QuietKey::kBusy : QuietKey::bits(d.out_valid_o);
+                                 });
     o.in_ready = m.res_ready_o;
     return o;
   }

@@ -3,6 +3,7 @@
 // edge, and the copy between beats and the standard port groups.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -97,15 +98,21 @@ void drive_stage_in(VM& m, bool in_valid, const In& in, bool out_ready) {
 
 /// Settles `m` after its inputs were driven and reads its out_* group into a fresh `Outputs`
 /// (StreamOutputs, JoinOutputs, SideOutputs...); the caller adds the ready outputs. The beat is
-/// read only while out_valid, as the C++ models leave it default otherwise.
-template <typename Outputs, typename VM>
-Outputs settle_out(Harness<VM>& h) {
-  h.eval();
+/// read only while out_valid, as the C++ models leave it default otherwise. `key` and `out(m)`
+/// say what was driven and read (QuietKey): Harness::settle skips the cycles that change nothing.
+template <typename Outputs, typename VM, typename Out>
+Outputs settle_out(Harness<VM>& h, std::uint32_t key, Out&& out) {
+  h.settle(key, std::forward<Out>(out));
   const VM& m = h.dut();
   Outputs o;
   o.out_valid = m.out_valid_o != 0;
   if (o.out_valid) o.out = read_stage_out<decltype(o.out)>(m);
   return o;
+}
+/// settle_out for an adapter that does not say what it drove: every cycle is evaluated.
+template <typename Outputs, typename VM>
+Outputs settle_out(Harness<VM>& h) {
+  return settle_out<Outputs>(h, 0, [](const VM&) { return QuietKey::kBusy; });
 }
 
 /// The base of every Verilated adapter (RtlStream, RtlJoin, FrameCheckRtl, ...): it owns the

@@ -38,7 +38,12 @@ class RtlJoin : public RtlAdapter<VM> {
     Ports::a::drive(m, a_valid, a);
     Ports::b::drive(m, b_valid, b);
     m.out_ready_i = out_ready;
-    auto o = settle_out<JoinOutputs<Out>>(this->harness());
+    auto o = settle_out<JoinOutputs<Out>>(
+        this->harness(), QuietKey::bits(a_valid, b_valid, out_ready), [&](const VM& d) {
+          const bool ar = Ports::a::ready(d), br = Ports::b::ready(d);
+          const bool moved = (a_valid && ar) || (b_valid && br) || (d.out_valid_o && out_ready);
+          return moved ? QuietKey::kBusy : QuietKey::bits(ar, br, d.out_valid_o);
+        });
     o.a_ready = Ports::a::ready(m);
     o.b_ready = Ports::b::ready(m);
     return o;

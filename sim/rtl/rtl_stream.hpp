@@ -28,7 +28,11 @@ class RtlStream : public RtlAdapter<VM> {
   StreamOutputs<Out> eval(bool in_valid, const In& in, bool out_ready) {
     VM& m = this->dut();
     drive_stage_in(m, in_valid, in, out_ready);
-    auto o = settle_out<StreamOutputs<Out>>(this->harness());
+    auto o = settle_out<StreamOutputs<Out>>(
+        this->harness(), QuietKey::bits(in_valid, out_ready), [&](const VM& d) {
+          const bool moved = (in_valid && d.in_ready_o) || (d.out_valid_o && out_ready);
+          return moved ? QuietKey::kBusy : QuietKey::bits(d.in_ready_o, d.out_valid_o);
+        });
     o.in_ready = m.in_ready_o;
     return o;
   }

@@ -2,6 +2,9 @@
 // The one Verilator harness: owns the context and the model; reset, tick, optional FST trace.
 #pragma once
 
+#include <verilated.h>
+#include <verilated_fst_c.h>
+
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -11,8 +14,7 @@
 #include <type_traits>
 #include <utility>
 
-#include <verilated.h>
-#include <verilated_fst_c.h>
+#include "sim/rtl/quiet_cycles.hpp"
 
 namespace scw::sim {
 
@@ -73,6 +75,29 @@ struct TraceWindow {
   }
 };
 
+/// The Verilator symbol-table class of model `VM`, which holds the whole of its state (every
+/// module instance's variables, and the input ports). SCW_MODEL_STATE(VM) names it where
+/// VM__Syms.h is included (sim/builds/, for every model of a pipeline build); elsewhere it is
+/// unknown (void) and the harness never skips a cycle (Harness::settle).
+template <typename VM>
+struct ModelSyms {
+  using type = void;
+};
+#define SCW_MODEL_STATE(VM)    \
+  namespace scw::sim {         \
+  template <>                  \
+  struct ModelSyms<::VM> {     \
+    using type = ::VM##__Syms; \
+  };                           \
+  }
+
+/// SCW_SKIP_IDLE=0 in the environment: every cycle of every model is evaluated (Harness::settle
+/// skips none), to rule the skipping out when something looks wrong. It changes no result.
+inline bool skipping_off() {
+  const char* v = std::getenv("SCW_SKIP_IDLE");
+  return v != nullptr && std::string(v) == "0";
+}
+
 /// Owns a VerilatedContext and one model `VM` with ports `clk_i` and `rst_ni`.
 /// Set the environment variable SCW_FST_DIR to a folder and every harness writes
 /// `<folder>/<name>.fst` (open it with GTKWave), only the cycles of SCW_FST_WINDOW when that is
@@ -100,6 +125,11 @@ class Harness {
     dut_->clk_i = 0;
     dut_->rst_ni = 1;
     dut_->eval();
+    if constexpr (kStateKnown) {
+      if (!tracing && !skipping_off())
+        quiet_ = std::make_unique<QuietCycles>(
+            reinterpret_cast<unsigned char*>(dut_->rootp->vlSymsp), sizeof(Syms));
+    }
   }
   ~Harness() {
     // Verilator 5.006 erases a model's scopes from the thread's *current* context, which is
@@ -121,11 +151,27 @@ class Harness {
   /// Settles combinational logic after inputs change (no clock edge; after tick(), the falling
   /// edge too).
   void eval() {
-    dut_->eval();
-    low_seen_ = true;
+    thaw();
+    settle_now();
   }
+  /// eval() for an adapter that says what it drove (`key`, QuietKey) and what it reads (`out`,
+  /// the model to a QuietKey): the cycles in which the model only runs round a loop under
+  /// unchanged inputs are skipped, settling and clock edge (sim/rtl/quiet_cycles.hpp; only for
+  /// models whose state is known, ModelSyms, and untraced).
+  template <typename Out>
+  void settle(std::uint32_t key, Out&& out) {
+    if (!quiet_) return eval();
+    if (quiet_->skip(
+            key, [this] { edge(); }, [this] { settle_now(); }))
+      return;
+    settle_now();
+    quiet_->settled(key, out(static_cast<const VM&>(*dut_)));
+  }
+  /// Cycles skipped by settle() so far.
+  std::uint64_t skipped() const { return quiet_ ? quiet_->skipped() : 0; }
   /// Holds rst_ni low for `cycles` clock cycles (the RTL resets synchronously, on these edges).
   void reset(int cycles = 2) {
+    thaw();
     dut_->rst_ni = 0;
     for (int i = 0; i < cycles; ++i) tick();
     dut_->rst_ni = 1;
@@ -142,6 +188,11 @@ class Harness {
   /// read their outputs, so they pay one eval() a cycle here instead of three
   /// (docs/performance.md, "Simulation speed").
   void tick() {
+    if (quiet_ && quiet_->frozen()) {
+      ++cycles_;
+      ctx_->timeInc(2);
+      return;
+    }
     if (tracing()) {
       dut_->eval();
       dump();
@@ -154,16 +205,37 @@ class Harness {
       ctx_->timeInc(1);
     } else {
       if (!low_seen_) dut_->eval();
-      dut_->clk_i = 1;
-      dut_->eval();
-      dut_->clk_i = 0;
-      low_seen_ = false;
+      edge();
       ctx_->timeInc(2);
     }
     ++cycles_;
   }
 
  private:
+  using Syms = typename ModelSyms<VM>::type;
+  static constexpr bool kStateKnown = !std::is_void_v<Syms>;
+
+  /// Leaves a skipped loop at the phase it has reached (sim/rtl/quiet_cycles.hpp) and forgets
+  /// the watch: the caller drives the model by other means.
+  void thaw() {
+    if (!quiet_) return;
+    quiet_->skip(
+        QuietKey::kBusy, [this] { edge(); }, [this] { settle_now(); });
+    quiet_->forget();
+  }
+  void settle_now() {
+    dut_->eval();
+    low_seen_ = true;
+  }
+  /// The rising edge, the model having seen the clock low; the falling one is left to the next
+  /// eval().
+  void edge() {
+    dut_->clk_i = 1;
+    dut_->eval();
+    dut_->clk_i = 0;
+    low_seen_ = false;
+  }
+
   bool tracing() const {
     if constexpr (kTraced) return trace_ != nullptr;
     return false;
@@ -182,6 +254,8 @@ class Harness {
   TraceWindow window_;
   std::uint64_t cycles_ = 0;
   bool low_seen_ = true;  // an eval() saw the clock low since the last rising edge
+  // Skipping still cycles (settle()), when the model's state is known and it is not traced.
+  std::unique_ptr<QuietCycles> quiet_;
 };
 
 }  // namespace scw::sim
