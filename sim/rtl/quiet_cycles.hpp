@@ -57,10 +57,10 @@ class QuietCycles {
   }
 
   /// Before the model settles in a cycle with inputs `key` (written into its state already).
-  /// True: the cycle is skipped, its settling and its clock edge. kBusy, which no loop has, only
-  /// leaves a loop. When a loop ends here, the
+  /// True: the cycle is skipped, its settling and its clock edge. When a loop ends here, the
   /// model is first stepped to where the loop had reached: `edge()` must give it one rising clock
-  /// edge, `settle()` settle it (both without tracing or counting).
+  /// edge, `settle()` settle it (both without tracing or counting). kBusy, which no loop has,
+  /// only ends a loop; called so after a clock edge and before the next settle.
   template <typename Edge, typename Settle>
   bool skip(std::uint32_t key, Edge&& edge, Settle&& settle) {
     if (!frozen_) return false;

@@ -216,7 +216,8 @@ class Harness {
   static constexpr bool kStateKnown = !std::is_void_v<Syms>;
 
   /// Leaves a skipped loop at the phase it has reached (sim/rtl/quiet_cycles.hpp) and forgets
-  /// the watch: the caller drives the model by other means.
+  /// the watch: the caller drives the model by other means. Between a clock edge and the next
+  /// settle, as eval() and reset() are called.
   void thaw() {
     if (!quiet_) return;
     quiet_->skip(
