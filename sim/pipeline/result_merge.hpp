@@ -19,6 +19,10 @@ constexpr bool result_merge_params_match() {
   return VM::ResW == BeatLayout<hls::warning::ResultPacket>::kPayloadBits;
 }
 
+/// scw_result_merge's result group res_valid_i/res_ready_o/res_data_i/res_last_i, bound as every
+/// stage's input.
+SCW_IN_PORTS(ResultMergeResPorts, res);
+
 /// `VM` is a Verilated scw_result_merge; same eval/tick as hls::pipeline::ResultMerge.
 template <typename VM>
 class ResultMergeRtl : public RtlAdapter<VM> {
@@ -31,10 +35,7 @@ class ResultMergeRtl : public RtlAdapter<VM> {
                const hls::pipeline::FlagPacket& left, bool right_valid,
                const hls::pipeline::FlagPacket& right, bool out_ready) {
     VM& m = this->dut();
-    m.res_valid_i = res_valid;
-    // Packed only with valid, as SCW_IN_PORTS: the port keeps the last result, as a register would.
-    if (res_valid) BeatLayout<hls::warning::ResultPacket>::payload(res).to_port(m.res_data_i);
-    m.res_last_i = res.last;
+    ResultMergeResPorts::drive(m, res_valid, res);
     m.left_valid_i = left_valid;
     m.left_error_i = left.data.error;
     m.right_valid_i = right_valid;
@@ -47,7 +48,7 @@ class ResultMergeRtl : public RtlAdapter<VM> {
                                    const bool moved = d.res_ready_o || (d.out_valid_o && out_ready);
                                    return moved ? QuietKey::kBusy : QuietKey::bits(d.out_valid_o);
                                  });
-    o.in_ready = m.res_ready_o;
+    o.in_ready = ResultMergeResPorts::ready(m);
     return o;
   }
 };

@@ -184,7 +184,7 @@ class Harness {
   /// and inputs, so they read the same), and the eval before the rising edge is made only when
   /// none was made since the last edge: Verilator must see the clock low once between two
   /// rising edges, and it settles the logic fed by inputs changed since (its `ico` phase) before
-  /// it fires the edge in the same eval(). The adapters settle every cycle (harness eval()) to
+  /// it fires the edge in the same eval(). The adapters settle every cycle (settle()) to
   /// read their outputs, so they pay one eval() a cycle here instead of three
   /// (docs/performance.md, "Simulation speed").
   void tick() {
