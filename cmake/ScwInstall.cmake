@@ -15,6 +15,9 @@ foreach(dir hls sim host)
           FILES_MATCHING PATTERN "*.hpp" PATTERN "*.def")
 endforeach()
 install(FILES ${PROJECT_BINARY_DIR}/generated/scw_pkg.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/scw)
+# The C-synthesis tops beside their header: the files an HLS tool is pointed at (docs/hls.md).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/hls/tops DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/scw/hls
+        FILES_MATCHING PATTERN "*.cpp" PATTERN "*.tcl")
 install(EXPORT scwTargets NAMESPACE scw:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/scw)
 
 # One file list per top: the package, the shared primitives, then the top's stage folders (or

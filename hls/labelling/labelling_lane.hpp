@@ -35,7 +35,9 @@ struct LabellingRams {
   std::array<int, Params::kLanes> count{};     // labels used per lane (registers)
   // Per lane: its strip's first (left) and last (right) pixel of every row.
   std::array<std::array<BorderPixel, Params::kMaxHeight>, Params::kLanes> left{}, right{};
+#ifndef __SYNTHESIS__
   std::vector<std::int32_t>* node_map = nullptr;  // second-pass support, not hardware
+#endif
 };
 
 /// Lane `index` of `Params::kLanes`: columns x0 .. x0 + width - 1 of the image, global tile
@@ -203,8 +205,10 @@ class LabellingLane {
       if (p.x == 0 && index_ > 0) ram.left[index_][p.y] = {node1, p.d};
       if (p.x == width_ - 1 && index_ + 1 < Params::kLanes) ram.right[index_][p.y] = {node1, p.d};
     }
+#ifndef __SYNTHESIS__
     if (ram.node_map)
       (*ram.node_map)[static_cast<std::size_t>(p.y * cfg_.width + x0_ + p.x)] = node1;
+#endif
     return overflow;
   }
 

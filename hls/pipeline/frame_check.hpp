@@ -46,6 +46,7 @@ struct FrameCheckConfig {
 /// previous frame's flag, and one flag register takes one flag per clock).
 template <typename Params>
 void check_frame_check_config(const FrameCheckConfig& cfg) {
+#ifndef __SYNTHESIS__  // the host's check: a synthesised top trusts its registers
   const auto fail = [&](const std::string& why) {
     throw std::invalid_argument("frame check: " + std::to_string(cfg.width) + " x " +
                                 std::to_string(cfg.height) + ": " + why);
@@ -58,6 +59,9 @@ void check_frame_check_config(const FrameCheckConfig& cfg) {
   if (cfg.height < 1 || cfg.height > Params::kMaxHeight)
     fail("height outside 1 .. " + std::to_string(Params::kMaxHeight));
   if (cfg.width / Params::kPpc * cfg.height < 2) fail("a frame needs at least two beats");
+#else
+  (void)cfg;
+#endif
 }
 
 /// One frame's verdict.

@@ -1,13 +1,16 @@
 # SPDX-License-Identifier: Apache-2.0
 # [install] `cmake --install` into a fresh prefix, then examples/downstream configured against it
 # in a fresh folder: find_package(scw), the disparity stage's model, and scw_disparity Verilated
-# from the installed RTL through its file list; the example exits 0 when they agree.
+# from the installed RTL through its file list; the example exits 0 when they agree. The
+# C-synthesis tops and their Vitis HLS script must be installed beside the headers.
 add_test(NAME "install:a downstream project finds the installed scw, runs a model, Verilates scw_disparity"
          COMMAND bash -c "rm -rf install_check && \
                           '${CMAKE_COMMAND}' --install '${PROJECT_BINARY_DIR}' \
                             --prefix \"$PWD/install_check/prefix\" > install_check.log && \
                           test -s install_check/prefix/share/scw/rtl_models/scw_pipeline.f && \
                           test -x install_check/prefix/bin/scw && \
+                          test -s install_check/prefix/include/scw/hls/tops/scw_pipeline_top.cpp && \
+                          test -s install_check/prefix/include/scw/hls/tops/scw_hls.tcl && \
                           '${CMAKE_COMMAND}' -S '${PROJECT_SOURCE_DIR}/examples/downstream' \
                             -B install_check/build -G '${CMAKE_GENERATOR}' \
                             -DCMAKE_PREFIX_PATH=\"$PWD/install_check/prefix\" >> install_check.log && \

@@ -3,14 +3,15 @@
 // processes over scw::hls::stream links, a frame a call) gives the clocked C++ chain's
 // (sim::PipelineChain) frame results and object table, on synthetic pairs at the small build.
 #include <catch2/catch.hpp>
-
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "hls/common/stream.hpp"
 #include "hls/pipeline/pipeline_params.hpp"
 #include "hls/pipeline/pipeline_top.hpp"
+#include "hls/tops/tops.hpp"
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
 #include "sim/pipeline/pipeline_chain.hpp"
@@ -25,8 +26,11 @@ using scw::sim::PipelineEngines;
 /// `frames` pairs through both, compared frame by frame. `road`: a street whose road the stage
 /// fits and removes (frame-level state that the top carries from call to call); otherwise a
 /// textured background and a box, the right camera shifted half a pixel so the rectifiers work.
+/// `through_c_synthesis_top`: the frames go through hls/tops' scw_pipeline_top (built at
+/// SCW_HLS_BUILD, this target's SmallPipeline<1>, its stages `static` in it) instead of
+/// pipeline_frame on stages of the test's own.
 template <int P>
-void check_top_equals_chain(int frames, bool road) {
+void check_top_equals_chain(int frames, bool road, bool through_c_synthesis_top = false) {
   using Build = hp::SmallPipeline<P>;
   const int w = 64, h = 32;
   hostp::StageOptions opt;
@@ -76,7 +80,17 @@ void check_top_equals_chain(int frames, bool road) {
       l.write(left[static_cast<std::size_t>(i)]);
       r.write(right[static_cast<std::size_t>(i)]);
     }
-    hp::pipeline_frame(*stages, l, r, res, words);
+    if (through_c_synthesis_top) {
+      if constexpr (std::is_same_v<Build, scw::hls::tops::Build>) {
+        const int cols = k == 0 ? setup.knot_cols : 0;  // the knots go in with the first call
+        scw_pipeline_top(l, r, res, words, setup.left_knots.data(), setup.right_knots.data(), cols,
+                         setup.knot_rows, setup);
+      } else {
+        FAIL("scw_pipeline_top is built at SCW_HLS_BUILD, not at this P");
+      }
+    } else {
+      hp::pipeline_frame(*stages, l, r, res, words);
+    }
     CHECK(l.empty());
     CHECK(r.empty());
     while (!res.empty()) results.push_back(res.read());
@@ -85,7 +99,8 @@ void check_top_equals_chain(int frames, bool road) {
   CHECK(results == chain.results());
   CHECK(table == chain.object_table());
   for (const auto& res : results) CHECK(res.data.frame.objects >= 1);  // the box, every frame
-  if (road) CHECK(stages->road.line() != setup.road.nominal);            // the fit moved the road
+  if (road && !through_c_synthesis_top)                                // the fit moved the road
+    CHECK(stages->road.line() != setup.road.nominal);
 }
 
 }  // namespace
@@ -102,4 +117,14 @@ TEST_CASE("the pipeline top equals the C++ chain's results, P = 2", "[pipeline][
 TEST_CASE("the pipeline top with a road to fit equals the C++ chain's results, P = 1",
           "[pipeline][hls]") {
   check_top_equals_chain<1>(3, true);
+}
+
+// One process, one call of this test: the top's stages are `static`, configured by its first
+// call (as in hardware, where they are registers), so a second test through it would find them
+// mid-stream.
+TEST_CASE(
+    "the C-synthesis top scw_pipeline_top, with a road to fit, equals the C++ chain's "
+    "results, P = 1",
+    "[pipeline][hls]") {
+  check_top_equals_chain<1>(3, true, true);
 }
