@@ -247,10 +247,8 @@ module scw_disparity_decide #(
   node_t root;
   /* verilator lint_on UNUSEDSIGNAL */
   logic t_region, t_tex_rej;
-  logic [NumW-1:0] t_limit;
   assign root = gen_lvl[Levels].v[0];
   assign {t_region, t_tex_rej} = side_q[2*TreeStages-1 -: 2];
-  assign t_limit = t_limit_q;
 
   // ---- A: products, limits, the uniqueness mask, sub-pixel set-up -----------------------
   logic [NumDisp-1:0] far;
@@ -268,7 +266,7 @@ module scw_disparity_decide #(
     end else begin : gen_no_below
       assign below = 1'b0;
     end
-    assign far[d] = uniq_en_q && in_use_q[d] && NumW'(d) < t_limit && (above || below);
+    assign far[d] = uniq_en_q && in_use_q[d] && NumW'(d) < t_limit_q && (above || below);
   end
   // Both differences and both distances to m, registered; the sign picks them in B.
   assign neg = root.prev < root.next;
@@ -292,7 +290,7 @@ module scw_disparity_decide #(
     // The winner is below both n and the limit, so it is the last of the min of the two
     // exactly when it is the last of either.
     a_fit_q <= sub_q && root.idx != '0 && root.idx != last_q &&
-               NumW'(root.idx) + 1'b1 != t_limit;
+               NumW'(root.idx) + 1'b1 != t_limit_q;
     a_far_q <= far;
     a_neg_q <= neg;
     a_full_q <= neg && root.prev == root.sad;
