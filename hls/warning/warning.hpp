@@ -16,7 +16,7 @@ namespace scw::hls::warning {
 /// Throws std::invalid_argument naming the field if `cfg` does not fit a stage built with
 /// `Params`.
 template <typename Params>
-void check_config(const WarningConfig& cfg) {
+void check_config([[maybe_unused]] const WarningConfig& cfg) {
 #ifndef __SYNTHESIS__  // the host's check: a synthesised top trusts its registers
   auto fail = [](const std::string& m) { throw std::invalid_argument("warning: " + m); };
   if (cfg.baseline_q8 == 0 || cfg.baseline_q8 >= (1u << 20))
@@ -29,8 +29,6 @@ void check_config(const WarningConfig& cfg) {
   if (cfg.rule != DistanceRule::kClosest && cfg.rule != DistanceRule::kSpread)
     fail("distance rule " + std::to_string(static_cast<int>(cfg.rule)) +
          " unknown (0 closest, 1 spread)");
-#else
-  (void)cfg;
 #endif
 }
 

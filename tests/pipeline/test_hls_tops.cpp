@@ -226,14 +226,13 @@ TEST_CASE("C-synthesis top scw_warning_top gives the chain's frame results", "[p
   // The road lines the warning stage measures heights on: the road stage's, by its frame function
   // (scw_road_top is another case's: its kernel is static).
   scw::hls::road::Road<Build::road> road(c.setup.road);
-  scw::hls::stream<Build::road::out_beat, tops::kFrameBeats> left_over("left over");
+  scw::hls::Discard left_over;  // the beats: the road case's
   tops::RoadLines lines("lines");
   std::vector<scw::hls::warning::FrameResult> out;
   for (int k = 0; k < kFrames; ++k) {
     tops::RoadIn in("in");
     write_frame(in, c.disparity, k);
     scw::hls::road::road_frame(road, in, left_over, lines, kN);
-    while (!left_over.empty()) left_over.read();
     tops::Words words("objects");
     for (const auto& w : frame_words(c.objects, k)) words.write(w);
     tops::Results o("results");
