@@ -9,7 +9,9 @@
 # With BASELINE_BUILD_DIR (another build of scw, e.g. an older revision) its RTL runs are timed in
 # the same loop, so the two are compared on the same machine at the same moment. The RTL runs
 # are also timed with SCW_SKIP_IDLE=0 (every cycle of every block evaluated, "rtl-all"), which
-# shows what skipping the idle blocks' still cycles gains (docs/sim.md).
+# shows what skipping the idle blocks' still cycles gains (docs/sim.md), and, where the build has
+# the scw_pipeline top at that width, `--engine rtl-top` (the top as one Verilated model), whose
+# report must be the chain's (tests/pipeline/sim_engines_agree.cmake).
 set -euo pipefail
 build="$(cd "${1:?usage: sim_speed.sh BUILD_DIR [FRAMES] [REPEATS] [BASELINE_BUILD_DIR]}" && pwd)"
 frames="${2:-3}"
@@ -26,13 +28,14 @@ fi
 
 # Whether a build has the thesis-size RTL at width P: `scw sim --engine rtl` refuses the others.
 has_rtl() {
-  "$1" sim --config thesis --ppc "$2" --frames 1 --engine rtl --json "$work/probe.json" \
+  "$1" sim --config thesis --ppc "$2" --frames 1 --engine "${3:-rtl}" --json "$work/probe.json" \
     >/dev/null 2>&1
 }
 runs=()
 for p in 1 2 4; do runs+=("cpp $p $scw"); done
 for p in 1 2 4; do
   if has_rtl "$scw" "$p"; then runs+=("rtl $p $scw" "rtl-all $p $scw"); fi
+  if has_rtl "$scw" "$p" rtl-top; then runs+=("rtl-top $p $scw"); fi
   if [ -n "$base" ] && has_rtl "$base" "$p"; then runs+=("rtl $p $base"); fi
 done
 
@@ -76,4 +79,7 @@ for p in 1 2 4; do
     echo "P = $p: the reports DIFFER with and without skipping" >&2
     exit 1
   fi
+  t="$work/rtl-top_${p}_this.json"
+  [ -f "$t" ] || continue
+  cmake -DRTL_JSON="$a" -DTOP_JSON="$t" -P "$(dirname "$0")/../tests/pipeline/sim_engines_agree.cmake"
 done

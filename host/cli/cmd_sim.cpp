@@ -38,7 +38,9 @@ void print_timing(const host::pipeline::SimRun& r) {
   std::cout << std::left << std::setw(24) << "" << std::right << std::setw(12) << "cycles"
             << std::setw(10) << "ms" << " | thesis: " << std::setw(7) << "FPGA" << std::setw(7)
             << "GPU" << std::setw(7) << "CPU" << "  (ms, Table 5.7)\n";
+  if (t.stages.empty()) std::cout << "(one Verilated top: the blocks inside it are not seen)\n";
   for (const auto& row : thesis::kTable57) {
+    if (t.stages.empty()) break;
     std::int64_t busy = 0;
     for (const auto& s : t.stages)
       if (s.name == row.block) busy = s.busy();
@@ -62,15 +64,17 @@ void print_timing(const host::pipeline::SimRun& r) {
 void print_frames(const host::pipeline::SimRun& r) {
   const auto& t = r.timing;
   std::cout << "\nbusy = a block's first beat in to its last beat out, last frame; T_P = "
-               "between the last two results; T_L = the last frame's.\n"
-            << "every block, per frame (cycles from the first input beat):\n";
-  for (const auto& s : t.stages)
-    std::cout << "  " << std::left << std::setw(16) << s.name << std::right << std::setw(10)
-              << s.first_in << " .. " << std::setw(10) << s.last_out << "\n";
-  std::cout << "FIFOs (depth, most held):";
-  for (const auto& f : r.report.fifos)
-    std::cout << " " << f.name << " " << f.depth << "/" << f.max_occupancy;
-  std::cout << "\n";
+               "between the last two results; T_L = the last frame's.\n";
+  if (!t.stages.empty()) {
+    std::cout << "every block, per frame (cycles from the first input beat):\n";
+    for (const auto& s : t.stages)
+      std::cout << "  " << std::left << std::setw(16) << s.name << std::right << std::setw(10)
+                << s.first_in << " .. " << std::setw(10) << s.last_out << "\n";
+    std::cout << "FIFOs (depth, most held):";
+    for (const auto& f : r.report.fifos)
+      std::cout << " " << f.name << " " << f.depth << "/" << f.max_occupancy;
+    std::cout << "\n";
+  }
   for (std::size_t k = 0; k < t.frames.size(); ++k) {
     const auto& f = t.frames[k];
     const auto& res = r.results[k].frame;
@@ -101,8 +105,9 @@ void add_sim_command(CLI::App& app) {
   cmd->add_option("--ppc", s.ppc, "pixels per beat: 1, 2 or 4")->capture_default_str();
   cmd->add_option("--frames", s.frames, "frames back to back")->capture_default_str();
   cmd->add_option("--engine", s.engine,
-                  "cpp: every block's C++ model; rtl: every block Verilated (thesis size: "
-                  "build with -DSCW_THESIS_RTL=ON)")
+                  "cpp: every block's C++ model; rtl: every block Verilated; rtl-top: the "
+                  "scw_pipeline top as one Verilated model, faster, its blocks unseen (thesis "
+                  "size: build with -DSCW_THESIS_RTL=ON)")
       ->capture_default_str();
   cmd->add_option("--rtl-stages", s.rtl_stages,
                   "with --engine cpp: these blocks Verilated, e.g. labelling,warning");

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "hls/pipeline/pipeline_params.hpp"
@@ -32,7 +33,8 @@ sim::PipelineEngines engines_of(const SimOptions& o, const sim::PipelineEngines&
   if (o.engine == "cpp" && o.rtl_stages.empty()) return sim::PipelineEngines::all(sim::Engine::cpp);
   if (o.engine == "rtl") return built;
   if (o.engine != "cpp")
-    throw std::invalid_argument("--engine " + o.engine + ": use cpp or rtl (and --rtl-stages)");
+    throw std::invalid_argument("--engine " + o.engine +
+                                ": use cpp, rtl or rtl-top (and --rtl-stages with cpp)");
   auto e = sim::PipelineEngines::all(sim::Engine::cpp);
   std::stringstream ss(o.rtl_stages);
   std::string b;
@@ -108,12 +110,22 @@ ReferenceCheck check_reference(const cv::Mat& l, const cv::Mat& r, int window,
   return c;
 }
 
-template <typename Build, typename Rtl>
-SimRun run(const SimOptions& o, std::ostream& log, int width, int height, int dmin_default,
-           int num_disp_default,
-           const sim::PipelineEngines& built = sim::PipelineEngines::all(sim::Engine::rtl)) {
-  constexpr int P = Build::kPpc;
+/// What every engine's run starts from: the report's fixed fields, the pair and the setup.
+struct Prepared {
   SimRun s;
+  StageOptions so;
+  cv::Mat left, right;
+  sim::PipelineSetup setup;
+  sim::StallPattern pattern;
+  std::int64_t max_cycles = 0;
+};
+
+template <typename Build>
+Prepared prepare(const SimOptions& o, std::ostream& log, int width, int height, int dmin_default,
+                 int num_disp_default) {
+  constexpr int P = Build::kPpc;
+  Prepared p;
+  SimRun& s = p.s;
   s.options = o;
   s.engine = engine_name(o);
   s.width = width;
@@ -122,7 +134,7 @@ SimRun run(const SimOptions& o, std::ostream& log, int width, int height, int dm
   s.ppc = P;
   // Read before the run, so a wrong report fails in a second, not after minutes of simulation.
   if (!o.synth_json.empty()) s.slowest = synth::slowest_module(o.synth_json, o.config, P);
-  StageOptions so;
+  StageOptions& so = p.so;
   so.mode = disparity::mode_from_name(o.mode);
   so.edge_candidates = o.edge_candidates;
   so.dmin = o.dmin >= 0 ? o.dmin : dmin_default;
@@ -133,39 +145,100 @@ SimRun run(const SimOptions& o, std::ostream& log, int width, int height, int dm
   s.mode = so.mode;
   s.dmin = so.dmin;
   s.num_disp = so.num_disp;
-  const auto [l, r] = input_pair(o, width, height, so.dmin, so.dmin + so.num_disp - 1, log);
+  std::tie(p.left, p.right) = input_pair(o, width, height, so.dmin, so.dmin + so.num_disp - 1, log);
   const auto knots = identity_knots(width, height, Build::kGridLog2);
-  const auto setup = make_setup(width, height, Build::kGridLog2, so, knots, knots, 1);
-  const std::vector<cv::Mat> ls(static_cast<std::size_t>(o.frames), l);
-  const std::vector<cv::Mat> rs(static_cast<std::size_t>(o.frames), r);
-  const auto pattern = sim::StallPattern::parse(o.stalls);
-
+  p.setup = make_setup(width, height, Build::kGridLog2, so, knots, knots, 1);
+  p.pattern = sim::StallPattern::parse(o.stalls);
+  const std::int64_t per_frame = static_cast<std::int64_t>(width) * height / P;
+  p.max_cycles = (o.frames + 2) * per_frame * 8;
   log << "scw sim: " << o.config << ", " << width << " x " << height << ", P = " << P << ", "
       << o.frames << " frames, engine " << s.engine << "\n";
-  sim::PipelineChain<Build, Rtl> chain(setup, engines_of(o, built), frames_beats<P>(ls),
-                                       frames_beats<P>(rs), pattern, pattern);
-  const std::int64_t per_frame = static_cast<std::int64_t>(width) * height / P;
-  chain.run(static_cast<std::size_t>(o.frames), (o.frames + 2) * per_frame * 8,
-            [&](std::int64_t c, std::size_t done) {
-              log << "\r  cycle " << c << ", " << done << " of " << o.frames << " results"
-                  << std::flush;
-            });
-  log << "\r  " << chain.cycles() << " cycles, " << o.frames << " results            \n";
-  s.cycles = chain.cycles();
-  s.timing = chain.timing();
-  s.report = chain.report();
-  for (const auto& res : chain.results()) s.results.push_back(res.data);
+  return p;
+}
+
+/// The progress line every `every` cycles, and the run's last line.
+void progress(std::ostream& log, std::int64_t c, std::size_t done, int frames) {
+  log << "\r  cycle " << c << ", " << done << " of " << frames << " results" << std::flush;
+}
+
+template <typename Build>
+void finish(Prepared& p, const SimOptions& o, std::ostream& log) {
+  log << "\r  " << p.s.cycles << " cycles, " << o.frames << " results            \n";
   if (o.reference) {
     log << "the floating-point chain (direct SAD reference or cv::StereoBM, flood fill, Eigen) "
            "on the same pair...\n";
-    s.reference = check_reference(l, r, Build::kWindow, so, o.frames, s.results.back().frame);
+    p.s.reference =
+        check_reference(p.left, p.right, Build::kWindow, p.so, o.frames, p.s.results.back().frame);
   }
-  return s;
+}
+
+template <int P>
+auto frames_of(const cv::Mat& m, int frames) {
+  return frames_beats<P>(std::vector<cv::Mat>(static_cast<std::size_t>(frames), m));
+}
+
+template <typename Build, typename Rtl>
+SimRun run(const SimOptions& o, std::ostream& log, int width, int height, int dmin_default,
+           int num_disp_default,
+           const sim::PipelineEngines& built = sim::PipelineEngines::all(sim::Engine::rtl)) {
+  constexpr int P = Build::kPpc;
+  Prepared p = prepare<Build>(o, log, width, height, dmin_default, num_disp_default);
+  sim::PipelineChain<Build, Rtl> chain(p.setup, engines_of(o, built),
+                                       frames_of<P>(p.left, o.frames),
+                                       frames_of<P>(p.right, o.frames), p.pattern, p.pattern);
+  chain.run(static_cast<std::size_t>(o.frames), p.max_cycles,
+            [&](std::int64_t c, std::size_t done) { progress(log, c, done, o.frames); });
+  p.s.cycles = chain.cycles();
+  p.s.timing = chain.timing();
+  p.s.report = chain.report();
+  for (const auto& res : chain.results()) p.s.results.push_back(res.data);
+  finish<Build>(p, o, log);
+  return std::move(p.s);
+}
+
+/// `--engine rtl-top`: the scw_pipeline top Verilated as one model. It agrees with the chain
+/// clock for clock at its ports (tests/pipeline), so the results and every frame's input and
+/// result cycles are the chain's; the blocks' busy spans and the FIFOs inside it are not seen.
+template <typename Build, typename Top>
+SimRun run_top(const SimOptions& o, std::ostream& log, int width, int height, int dmin_default,
+               int num_disp_default) {
+  constexpr int P = Build::kPpc;
+  Prepared p = prepare<Build>(o, log, width, height, dmin_default, num_disp_default);
+  Top top(p.setup);
+  sim::TopRunControl ctl;
+  ctl.progress = [&](std::int64_t c, std::size_t done) { progress(log, c, done, o.frames); };
+  const auto t =
+      top.run(frames_of<P>(p.left, o.frames), frames_of<P>(p.right, o.frames),
+              static_cast<std::size_t>(o.frames), p.max_cycles, p.pattern, p.pattern, ctl);
+  if (top.errors() != 0)
+    throw std::runtime_error("scw_pipeline raised its error bits (" + std::to_string(top.errors()) +
+                             ")");
+  p.s.cycles = t.cycles;
+  p.s.timing = sim::top_timing(t);
+  for (const auto& res : t.results) p.s.results.push_back(res.data);
+  finish<Build>(p, o, log);
+  return std::move(p.s);
+}
+
+/// `--engine rtl-top` where the build has no such top: what to build instead.
+[[noreturn]] void no_top(const SimOptions& o) {
+  throw std::invalid_argument(
+      "--engine rtl-top: this scw has no Verilated scw_pipeline top for --config " + o.config +
+      " at --ppc " + std::to_string(o.ppc) +
+      (o.config == "thesis" ? " (configure with -DSCW_THESIS_RTL=ON and the width in "
+                              "-DSCW_THESIS_RTL_PPC)"
+                            : " (the small build has P = 1 and 2)"));
 }
 
 template <int P>
 SimRun run_small(const SimOptions& o, std::ostream& log) {
   using Build = hls::pipeline::SmallPipeline<P>;
+  if (o.engine == "rtl-top") {
+    if constexpr (P <= 2)
+      return run_top<Build, sim::small_build::Top<P>>(o, log, Build::kMaxWidthPx, Build::kMaxHeight,
+                                                      0, Build::kNumDisp);
+    no_top(o);
+  }
   if constexpr (P <= 2) {
     // At P = 2 the small build verilates only the blocks that differ from P = 1 in more than
     // width (tests/pipeline compare its whole top); the rest run as C++ here.
@@ -184,6 +257,21 @@ SimRun run_thesis(const SimOptions& o, std::ostream& log) {
   using Build = hls::pipeline::ThesisPipeline<P>;
   constexpr int w = Build::kMaxWidthPx, h = Build::kMaxHeight;
   constexpr int kMinDisp = 20;  // the thesis's range: 45 candidates from 20 px
+#if SCW_THESIS_RTL
+  if (o.engine == "rtl-top") {
+    if constexpr (P == 1)
+      return run_top<Build, sim::thesis_build::Top<1>>(o, log, w, h, kMinDisp, Build::kNumDisp);
+#if SCW_THESIS_RTL_P2
+    if constexpr (P == 2)
+      return run_top<Build, sim::thesis_build::Top<2>>(o, log, w, h, kMinDisp, Build::kNumDisp);
+#endif
+#if SCW_THESIS_RTL_P4
+    if constexpr (P == 4)
+      return run_top<Build, sim::thesis_build::Top<4>>(o, log, w, h, kMinDisp, Build::kNumDisp);
+#endif
+  }
+#endif
+  if (o.engine == "rtl-top") no_top(o);
 #if SCW_THESIS_RTL
   if constexpr (P == 1)
     return run<Build, sim::thesis_build::Rtl<1>::type>(o, log, w, h, kMinDisp, Build::kNumDisp);
@@ -205,6 +293,10 @@ SimRun run_sim(const SimOptions& o, std::ostream& log) {
   if (o.frames < 1) throw std::invalid_argument("--frames must be at least 1");
   if (o.ppc != 1 && o.ppc != 2 && o.ppc != 4)
     throw std::invalid_argument("--ppc " + std::to_string(o.ppc) + ": use 1, 2 or 4");
+  if (o.engine == "rtl-top" && !o.rtl_stages.empty())
+    throw std::invalid_argument(
+        "--rtl-stages picks blocks of --engine cpp; the rtl-top engine "
+        "is every block in one Verilated top");
   if (o.config == "small")
     return o.ppc == 1 ? run_small<1>(o, log) : o.ppc == 2 ? run_small<2>(o, log)
                                                           : run_small<4>(o, log);

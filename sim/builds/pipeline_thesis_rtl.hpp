@@ -6,14 +6,15 @@
 
 #include <type_traits>
 
-#include "hls/pipeline/pipeline_params.hpp"
-#include "sim/pipeline/pipeline_chain.hpp"
 #include "Vthesis_ground.h"
 #include "Vthesis_ground_scw_ground.h"
 #include "Vthesis_merge.h"
 #include "Vthesis_merge_scw_result_merge.h"
 #include "Vthesis_warning.h"
 #include "Vthesis_warning_scw_warning.h"
+#include "hls/pipeline/pipeline_params.hpp"
+#include "sim/pipeline/pipeline_chain.hpp"
+#include "sim/pipeline/pipeline_top.hpp"
 // Their whole state, for skipping the cycles in which they are still (Harness::settle): the
 // stages idle between frames.
 #include "Vthesis_merge__Syms.h"
@@ -33,6 +34,8 @@ SCW_MODEL_STATE(Vthesis_warning)
 #include "Vthesis_p1_rectify_scw_rectify.h"
 #include "Vthesis_p1_road.h"
 #include "Vthesis_p1_road_scw_road.h"
+#include "Vthesis_p1_top.h"
+#include "Vthesis_p1_top_scw_pipeline.h"
 #if SCW_THESIS_RTL_P2
 #include "Vthesis_p2_check.h"
 #include "Vthesis_p2_check_scw_frame_check.h"
@@ -46,6 +49,8 @@ SCW_MODEL_STATE(Vthesis_warning)
 #include "Vthesis_p2_rectify_scw_rectify.h"
 #include "Vthesis_p2_road.h"
 #include "Vthesis_p2_road_scw_road.h"
+#include "Vthesis_p2_top.h"
+#include "Vthesis_p2_top_scw_pipeline.h"
 #endif
 #if SCW_THESIS_RTL_P4
 #include "Vthesis_p4_check.h"
@@ -60,6 +65,8 @@ SCW_MODEL_STATE(Vthesis_warning)
 #include "Vthesis_p4_rectify_scw_rectify.h"
 #include "Vthesis_p4_road.h"
 #include "Vthesis_p4_road_scw_road.h"
+#include "Vthesis_p4_top.h"
+#include "Vthesis_p4_top_scw_pipeline.h"
 #endif
 
 namespace scw::sim::thesis_build {
@@ -73,7 +80,8 @@ using Check = typename FrameCheckModel<P, Build<P>::kMaxWidthPx, Build<P>::kMaxH
 /// The blocks of beat width P, each Verilated model checked against the build it stands for.
 template <int P, typename VCheck, typename VGrid, typename VRectify, typename VDisparity,
           typename VLabelling, typename VRoad, typename VFCheck, typename VFGrid,
-          typename VFRectify, typename VFDisparity, typename VFLabelling, typename VFRoad>
+          typename VFRectify, typename VFDisparity, typename VFLabelling, typename VFRoad,
+          typename VTop, typename VFTop>
 struct Blocks {
   static_assert(frame_check_params_match<VFCheck, Check<P>>());
   static_assert(map_grid_params_match<VFGrid, typename Build<P>::map_grid>());
@@ -85,18 +93,21 @@ struct Blocks {
   using type = PipelineRtl<VCheck, VGrid, VRectify, VDisparity, VLabelling, Vthesis_warning,
                            Vthesis_merge, std::conditional_t<P == 1, Vthesis_ground, void>,
                            VRoad>;
+  static_assert(pipeline_params_match<VFTop, Build<P>>());
+  using top = VTop;
 };
 
 static_assert(warning_params_match<Vthesis_warning_scw_warning, Build<1>::warning>());
 static_assert(result_merge_params_match<Vthesis_merge_scw_result_merge>());
 static_assert(ground_params_match<Vthesis_ground_scw_ground, Build<1>::ground>());
 
-#define SCW_THESIS_BLOCKS(P)                                                                 \
-  Blocks<P, Vthesis_p##P##_check, Vthesis_p##P##_grid, Vthesis_p##P##_rectify,               \
-         Vthesis_p##P##_disparity, Vthesis_p##P##_labelling, Vthesis_p##P##_road,            \
-         Vthesis_p##P##_check_scw_frame_check, Vthesis_p##P##_grid_scw_rectify_map_grid,     \
-         Vthesis_p##P##_rectify_scw_rectify, Vthesis_p##P##_disparity_scw_disparity,         \
-         Vthesis_p##P##_labelling_scw_labelling, Vthesis_p##P##_road_scw_road>
+#define SCW_THESIS_BLOCKS(P)                                                                       \
+  Blocks<P, Vthesis_p##P##_check, Vthesis_p##P##_grid, Vthesis_p##P##_rectify,                     \
+         Vthesis_p##P##_disparity, Vthesis_p##P##_labelling, Vthesis_p##P##_road,                  \
+         Vthesis_p##P##_check_scw_frame_check, Vthesis_p##P##_grid_scw_rectify_map_grid,           \
+         Vthesis_p##P##_rectify_scw_rectify, Vthesis_p##P##_disparity_scw_disparity,               \
+         Vthesis_p##P##_labelling_scw_labelling, Vthesis_p##P##_road_scw_road, Vthesis_p##P##_top, \
+         Vthesis_p##P##_top_scw_pipeline>
 
 template <int P>
 struct Rtl;
@@ -111,5 +122,9 @@ template <>
 struct Rtl<4> : SCW_THESIS_BLOCKS(4) {};
 #endif
 #undef SCW_THESIS_BLOCKS
+
+/// The whole scw_pipeline top Verilated as one model at width P (`scw sim --engine rtl-top`).
+template <int P>
+using Top = PipelineTop<typename Rtl<P>::top, Build<P>>;
 
 }  // namespace scw::sim::thesis_build

@@ -38,6 +38,16 @@ struct PipelineTiming {
   std::vector<StageTiming> stages;  // of the last frame, blocks with inputs, in graph order
 };
 
+/// Adds one frame's stamps to `t` and brings T_P, T_L and the largest T_L up to date: the
+/// frames come in order, so the last one added is the last frame.
+inline void add_frame(PipelineTiming& t, const FrameTiming& f) {
+  t.frames.push_back(f);
+  t.max_latency_first = std::max(t.max_latency_first, f.result - f.first_in);
+  t.latency_first = f.result - f.first_in;
+  t.latency_last = f.result - f.last_in;
+  if (t.frames.size() >= 2) t.period = f.result - t.frames[t.frames.size() - 2].result;
+}
+
 /// `left_in`, `right_in`: the input links; `out`: the result link (its pops are the results);
 /// `start`: the run's cycle 0 on the simulator's clock.
 inline PipelineTiming pipeline_timing(const SimReport& report, const ChannelBase& left_in,
@@ -54,14 +64,9 @@ inline PipelineTiming pipeline_timing(const SimReport& report, const ChannelBase
     f.first_in = std::min(l[k].first_push, r[k].first_push) - start;
     f.last_in = std::max(l[k].last_push, r[k].last_push) - start;
     f.result = o[k].first_pop - start;
-    t.frames.push_back(f);
-    t.max_latency_first = std::max(t.max_latency_first, f.result - f.first_in);
+    add_frame(t, f);
   }
   if (t.frames.empty()) return t;
-  const FrameTiming& last = t.frames.back();
-  t.latency_first = last.result - last.first_in;
-  t.latency_last = last.result - last.last_in;
-  if (t.frames.size() >= 2) t.period = last.result - t.frames[t.frames.size() - 2].result;
   const std::size_t k = t.frames.size() - 1;
   for (const StageReport& s : report.stages) {
     if (s.frames.size() <= k) continue;

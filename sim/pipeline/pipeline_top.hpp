@@ -3,6 +3,7 @@
 // input and output stall generators, so the two can be compared clock for clock.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "hls/pipeline/pipeline_result.hpp"
 #include "sim/core/stall.hpp"
 #include "sim/pipeline/pipeline_setup.hpp"
+#include "sim/pipeline/pipeline_timing.hpp"
 #include "sim/rtl/disparity_rtl.hpp"
 #include "sim/rtl/labelling_rtl.hpp"
 #include "sim/rtl/map_grid_rtl.hpp"
@@ -44,6 +46,7 @@ struct TopRun {
   std::vector<hls::labelling::LabelPacket> object_table;  // every word of the obj_* output
   std::vector<std::int64_t> first_in_cycles;        // left input beats with sof
   std::vector<std::int64_t> first_in_right_cycles;  // right input beats with sof
+  std::vector<std::int64_t> last_in_cycles;         // each frame's last beat, either camera
   std::int64_t cycles = 0;
   std::uint64_t harness_start = 0;  // the harness's cycle count at this run's cycle 0 (traces)
 };
@@ -119,6 +122,8 @@ class PipelineTop : private RtlAdapter<VM> {
       const bool l_take = lv && m.l_ready_o, r_take = rv && m.r_ready_o;
       if (l_take && dl.beat().sof) r.first_in_cycles.push_back(c);
       if (r_take && dr.beat().sof) r.first_in_right_cycles.push_back(c);
+      if (l_take) note_last_in(r, r.first_in_cycles.size(), c);
+      if (r_take) note_last_in(r, r.first_in_right_cycles.size(), c);
       if (out_ready && m.out_valid_o) {
         r.results.push_back(read_stage_out<hls::pipeline::PipelineResultPacket>(m));
         r.result_cycles.push_back(c);
@@ -197,6 +202,14 @@ class PipelineTop : private RtlAdapter<VM> {
 
   int knot_cycles_ = 0;
 
+  /// A beat of frame `frames` - 1 (the frames begun on its camera) was taken in cycle `c`.
+  static void note_last_in(TopRun& r, std::size_t frames, std::int64_t c) {
+    if (frames == 0) return;  // beats before the first frame start, as the chain's FIFOs
+    if (r.last_in_cycles.size() < frames) r.last_in_cycles.resize(frames, -1);
+    auto& last = r.last_in_cycles[frames - 1];
+    last = std::max(last, c);
+  }
+
   void load(bool right, const PipelineSetup& s, const std::vector<hls::rectify::KnotPoint>& k) {
     VM& m = this->dut();
     for (int j = 0; j < s.knot_rows; ++j)
@@ -208,5 +221,22 @@ class PipelineTop : private RtlAdapter<VM> {
       }
   }
 };
+
+/// The frames' timing as pipeline_timing() gives it for a chain, from what the top's ports show:
+/// first and last input beat (either camera) and result cycle per frame, the period and the
+/// latencies. The blocks inside the top are not seen: `stages` stays empty.
+inline PipelineTiming top_timing(const TopRun& r) {
+  PipelineTiming t;
+  const std::size_t n = std::min({r.first_in_cycles.size(), r.first_in_right_cycles.size(),
+                                  r.last_in_cycles.size(), r.result_cycles.size()});
+  for (std::size_t k = 0; k < n; ++k) {
+    FrameTiming f;
+    f.first_in = std::min(r.first_in_cycles[k], r.first_in_right_cycles[k]);
+    f.last_in = r.last_in_cycles[k];
+    f.result = r.result_cycles[k];
+    add_frame(t, f);
+  }
+  return t;
+}
 
 }  // namespace scw::sim

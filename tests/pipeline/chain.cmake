@@ -26,6 +26,14 @@ add_test(NAME "pipeline:cli sim runs the small build in RTL, agrees with the ref
                           grep -q '\"agrees\": true' cli_sim.json && \
                           grep -q '\"period_cycles\"' cli_sim.json"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# `scw sim --engine rtl-top` (the scw_pipeline top as one model) reports the chain's cycles,
+# frame timing and results, with the sources and sinks stalling.
+foreach(p 1 2)
+  add_test(NAME "pipeline:cli sim --engine rtl-top reports what the chain of blocks does, P = ${p}"
+           COMMAND ${CMAKE_COMMAND} -DSCW=$<TARGET_FILE:scw> -DPPC=${p} -DSTALLS=random:5
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/pipeline/sim_engines_agree.cmake
+           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+endforeach()
 add_test(NAME "pipeline:cli sim refuses an unknown configuration and names the two"
          COMMAND bash -c "! '$<TARGET_FILE:scw>' sim --config big 2> cli_sim_bad.err && \
                           grep -q 'use thesis (1280 x 480' cli_sim_bad.err"
