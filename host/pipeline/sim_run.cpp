@@ -156,7 +156,7 @@ Prepared prepare(const SimOptions& o, std::ostream& log, int width, int height, 
   return p;
 }
 
-/// The progress line every `every` cycles, and the run's last line.
+/// The progress line a run rewrites as it goes (the chain and the top call it alike).
 void progress(std::ostream& log, std::int64_t c, std::size_t done, int frames) {
   log << "\r  cycle " << c << ", " << done << " of " << frames << " results" << std::flush;
 }
