@@ -81,5 +81,6 @@ for p in 1 2 4; do
   fi
   t="$work/rtl-top_${p}_this.json"
   [ -f "$t" ] || continue
-  cmake -DRTL_JSON="$a" -DTOP_JSON="$t" -P "$(dirname "$0")/../tests/pipeline/sim_engines_agree.cmake"
+  cmake -DRTL_JSON="$a" -DTOP_JSON="$t" \
+    -P "$(dirname "$0")/../tests/pipeline/sim_engines_agree.cmake"
 done
