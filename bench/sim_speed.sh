@@ -6,8 +6,9 @@
 # -DSCW_THESIS_RTL_PPC="1;2;4"), interleaved run by run; prints each run, then the medians in
 # cycles per second and seconds per frame (docs/performance.md, "Simulation speed"):
 #   bench/sim_speed.sh BUILD_DIR [FRAMES] [REPEATS] [BASELINE_BUILD_DIR]
-# With BASELINE_BUILD_DIR (another build of scw, e.g. an older revision) its RTL runs are timed in
-# the same loop, so the two are compared on the same machine at the same moment. The RTL runs
+# With BASELINE_BUILD_DIR (another build of scw, e.g. an older revision) its RTL runs (the chain,
+# and the top where it has one) are timed in the same loop, so the two are compared on the same
+# machine at the same moment, and whether their reports are the same is said. The RTL runs
 # are also timed with SCW_SKIP_IDLE=0 (every cycle of every block evaluated, "rtl-all"), which
 # shows what skipping the idle blocks' still cycles gains (docs/sim.md), and, where the build has
 # the scw_pipeline top at that width, `--engine rtl-top` (the top as one Verilated model), whose
@@ -37,6 +38,7 @@ for p in 1 2 4; do
   if has_rtl "$scw" "$p"; then runs+=("rtl $p $scw" "rtl-all $p $scw"); fi
   if has_rtl "$scw" "$p" rtl-top; then runs+=("rtl-top $p $scw"); fi
   if [ -n "$base" ] && has_rtl "$base" "$p"; then runs+=("rtl $p $base"); fi
+  if [ -n "$base" ] && has_rtl "$base" "$p" rtl-top; then runs+=("rtl-top $p $base"); fi
 done
 
 declare -A secs cycles
@@ -79,6 +81,16 @@ for p in 1 2 4; do
     echo "P = $p: the reports DIFFER with and without skipping" >&2
     exit 1
   fi
+  # Said, not required: a baseline of another revision may rightly report other results.
+  for e in rtl rtl-top; do
+    o="$work/${e}_${p}_baseline.json"
+    [ -f "$o" ] || continue
+    if cmp -s "$work/${e}_${p}_this.json" "$o"; then
+      echo "P = $p: $e reports the same as the baseline's"
+    else
+      echo "P = $p: $e reports differ from the baseline's"
+    fi
+  done
   t="$work/rtl-top_${p}_this.json"
   [ -f "$t" ] || continue
   cmake -DRTL_JSON="$a" -DTOP_JSON="$t" \
