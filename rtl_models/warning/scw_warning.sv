@@ -93,6 +93,16 @@ module scw_warning #(
   assign road_ready_o = en && need_road && in_valid_i;
   assign take         = in_valid_i && in_ready_o;
 
+  // The pipeline's own enable, en_p: en while a word is in it or waits at its input. Between
+  // tables (most of a frame: the labelling stage sends its table at the frame's end) the
+  // pipeline holds rather than shifting empty slots: no valid word moves either way, so the
+  // results are the same clock for clock, nothing toggles, and a simulator skips its updates.
+  // The fold and the output register stay on en (a result is handed over while the pipeline
+  // is idle).
+  logic [Stages-1:0] valid_q;
+  logic en_p;
+  assign en_p = en && (in_valid_i || |valid_q);
+
   // The frame's road: taken with its first word, held for the rest.
   logic [49:0] road_q, road_w;
   always_ff @(posedge clk_i) begin
@@ -135,7 +145,7 @@ module scw_warning #(
   logic [15:0] r_dq;
   scw_warning_rule #(.Latency(RuleLatency)) u_rule (
     .clk_i,
-    .en_i        (en),
+    .en_i        (en_p),
     .cfg_rule_i,
     .cfg_spread_i,
     .area_i      (20'(desc.area)),
@@ -149,7 +159,7 @@ module scw_warning #(
   logic [49:0] r_road;
   logic r_status, r_last, r_tc;
   scw_delay_ring #(.Width(FW + 53), .Depth(RuleLatency)) u_rule_delay (
-    .clk_i, .rst_ni, .en_i(en), .d_i({road_w, in_status, in_last_i, desc.d_max >= d_limit_q, fields}),
+    .clk_i, .rst_ni, .en_i(en_p), .d_i({road_w, in_status, in_last_i, desc.d_max >= d_limit_q, fields}),
     .q_o({r_road, r_status, r_last, r_tc, r_fields})
   );
 
@@ -162,7 +172,7 @@ module scw_warning #(
   logic [15:0] s0_dq_q;
   logic s0_status_q, s0_last_q, s0_meas_q, s0_tc_q;
   always_ff @(posedge clk_i) begin
-    if (en) begin
+    if (en_p) begin
       s0_fields_q <= r_fields;
       s0_road_q   <= r_road;
       s0_dq_q     <= r_dq;
@@ -176,20 +186,19 @@ module scw_warning #(
 
   logic [28:0] s1_recip;
   scw_warning_recip #(.Entries(TableSize)) u_recip (
-    .clk_i, .en_i(en), .addr_i(addr), .data_o(s1_recip)
+    .clk_i, .en_i(en_p), .addr_i(addr), .data_o(s1_recip)
   );
 
   // ---- S1 .. S(ObjStages-1) -----------------------------------------------------------------
-  logic [Stages-1:0] valid_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) valid_q <= '0;
-    else if (en) valid_q <= Stages'({valid_q, take});
+    else if (en_p) valid_q <= Stages'({valid_q, take});
   end
 
   logic [FW-1:0] w_fields;
   logic w_status, w_last;
   scw_delay_ring #(.Width(FW + 2), .Depth(ObjStages - 1)) u_word_delay (
-    .clk_i, .rst_ni, .en_i(en), .d_i({s0_status_q, s0_last_q, s0_fields_q}),
+    .clk_i, .rst_ni, .en_i(en_p), .d_i({s0_status_q, s0_last_q, s0_fields_q}),
     .q_o({w_status, w_last, w_fields})
   );
 
@@ -198,7 +207,7 @@ module scw_warning #(
   logic signed [DW-1:0] w_dist, w_dj;
   scw_warning_object #(.OutStages(ObjStages - 1)) u_object (
     .clk_i,
-    .en_i                  (en),
+    .en_i                  (en_p),
     .cfg_baseline_q8_i,
     .cfg_focal_q4_i,
     .cfg_cu_q4_i,
