@@ -46,9 +46,8 @@ std::vector<std::pair<fs::path, ShardManifest>> check_shards(const std::vector<f
     // The folders by name: a lambda capturing structured bindings is C++20 (clang 14 refuses).
     const auto differ = [&, first = quoted(d0), this_one = quoted(d)](
                             const std::string& what, const std::string& a, const std::string& b) {
-      return std::runtime_error(first + " and " + this_one +
-                                " are shards of different runs (" + what + ": " + a + " against " +
-                                b +
+      return std::runtime_error(first + " and " + this_one + " are shards of different runs (" +
+                                what + ": " + a + " against " + b +
                                 "): merge the shards of one run, made with the same command and "
                                 "settings");
     };
