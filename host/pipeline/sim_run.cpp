@@ -258,32 +258,14 @@ SimRun run_thesis(const SimOptions& o, std::ostream& log) {
   constexpr int w = Build::kMaxWidthPx, h = Build::kMaxHeight;
   constexpr int kMinDisp = 20;  // the thesis's range: 45 candidates from 20 px
 #if SCW_THESIS_RTL
-  if (o.engine == "rtl-top") {
-    if constexpr (P == 1)
-      return run_top<Build, sim::thesis_build::Top<1>>(o, log, w, h, kMinDisp, Build::kNumDisp);
-#if SCW_THESIS_RTL_P2
-    if constexpr (P == 2)
-      return run_top<Build, sim::thesis_build::Top<2>>(o, log, w, h, kMinDisp, Build::kNumDisp);
-#endif
-#if SCW_THESIS_RTL_P4
-    if constexpr (P == 4)
-      return run_top<Build, sim::thesis_build::Top<4>>(o, log, w, h, kMinDisp, Build::kNumDisp);
-#endif
+  if constexpr (sim::thesis_build::kBuilt<P>) {
+    if (o.engine == "rtl-top")
+      return run_top<Build, sim::thesis_build::Top<P>>(o, log, w, h, kMinDisp, Build::kNumDisp);
+    return run<Build, typename sim::thesis_build::Rtl<P>::type>(o, log, w, h, kMinDisp,
+                                                                Build::kNumDisp);
   }
 #endif
   if (o.engine == "rtl-top") no_top(o);
-#if SCW_THESIS_RTL
-  if constexpr (P == 1)
-    return run<Build, sim::thesis_build::Rtl<1>::type>(o, log, w, h, kMinDisp, Build::kNumDisp);
-#if SCW_THESIS_RTL_P2
-  if constexpr (P == 2)
-    return run<Build, sim::thesis_build::Rtl<2>::type>(o, log, w, h, kMinDisp, Build::kNumDisp);
-#endif
-#if SCW_THESIS_RTL_P4
-  if constexpr (P == 4)
-    return run<Build, sim::thesis_build::Rtl<4>::type>(o, log, w, h, kMinDisp, Build::kNumDisp);
-#endif
-#endif
   return run<Build, sim::NoRtl>(o, log, w, h, kMinDisp, Build::kNumDisp);
 }
 

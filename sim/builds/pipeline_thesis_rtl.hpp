@@ -127,4 +127,15 @@ struct Rtl<4> : SCW_THESIS_BLOCKS(4) {};
 template <int P>
 using Top = PipelineTop<typename Rtl<P>::top, Build<P>>;
 
+/// Whether this build Verilated width P: 1 always, 2 and 4 when SCW_THESIS_RTL_PPC names them.
+template <int P>
+inline constexpr bool kBuilt = P == 1
+#if SCW_THESIS_RTL_P2
+                               || P == 2
+#endif
+#if SCW_THESIS_RTL_P4
+                               || P == 4
+#endif
+    ;
+
 }  // namespace scw::sim::thesis_build

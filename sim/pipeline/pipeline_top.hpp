@@ -206,8 +206,7 @@ class PipelineTop : private RtlAdapter<VM> {
   static void note_last_in(TopRun& r, std::size_t frames, std::int64_t c) {
     if (frames == 0) return;  // beats before the first frame start, as the chain's FIFOs
     if (r.last_in_cycles.size() < frames) r.last_in_cycles.resize(frames, -1);
-    auto& last = r.last_in_cycles[frames - 1];
-    last = std::max(last, c);
+    r.last_in_cycles[frames - 1] = c;  // cycles only increase
   }
 
   void load(bool right, const PipelineSetup& s, const std::vector<hls::rectify::KnotPoint>& k) {

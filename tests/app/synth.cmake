@@ -9,7 +9,7 @@ add_test(NAME "app:cli synth at the small build writes a JSON entry per module"
                  -DWORK=${CMAKE_CURRENT_BINARY_DIR}/cli_synth
                  -P ${CMAKE_CURRENT_LIST_DIR}/synth_check.cmake)
 set_tests_properties("app:cli synth at the small build writes a JSON entry per module"
-                     PROPERTIES LABELS "yosys" TIMEOUT 300)
+                     PROPERTIES LABELS "yosys" TIMEOUT 300 COST 30)
 add_test(NAME "app:cli synth refuses an unknown config and names the configs"
          COMMAND ${CMAKE_COMMAND} -DSCW=$<TARGET_FILE:scw> -DMODE=unknown_config
                  -DWORK=${CMAKE_CURRENT_BINARY_DIR}/cli_synth_bad

@@ -18,4 +18,4 @@ add_test(NAME "install:a downstream project finds the installed scw, runs a mode
                           install_check/build/downstream"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("install:a downstream project finds the installed scw, runs a model, Verilates scw_disparity"
-                     PROPERTIES LABELS "install" TIMEOUT 900)
+                     PROPERTIES LABELS "install" TIMEOUT 900 COST 50)
