@@ -4,7 +4,9 @@
 
 // The C++ twin is scw::hls::warning::Warning (hls/warning/warning.hpp) clocked by
 // scw::sim::WarningModel, clock for clock: same in_ready, out_valid and out data every cycle.
-// One pipeline enable, en = !out_valid || out_ready: a word taken at an edge is in
+// The handshake's enable, en = !out_valid || out_ready, and the pipeline's, en_p (en while a
+// word is in the pipeline or at its input; the same edges whenever a word moves): a word taken
+// at an edge is in
 // R1 after it, in S(Latency-RuleLatency-2) Latency-2 enabled edges later, and the next enabled
 // edge folds it into the frame's accumulator; the word that closes the frame (its status word,
 // or a `last` without one) loads the output register on that edge. Stages:
