@@ -4,14 +4,19 @@
 # than the vector build must be refused naming --roi.
 set(_tsukuba "${PROJECT_SOURCE_DIR}/data/tsukuba")
 
-# Replays the set a fixture made: "vectors:TITLE in icarus" (and in verilator with BOTH). The
-# committed sets replay every testbench in both simulators (tests/vectors/replay.cmake), so a
-# user's set needs only the 4-state one, the Yosys-written block, to show the generator's output
-# and the testbench's generality; a Verilator build of a testbench costs twice an Icarus one.
+# Replays the set a fixture made: "vectors:TITLE in <simulator>", in Icarus Verilog unless
+# SIMULATORS names others. The committed sets replay every testbench in both simulators
+# (tests/vectors/replay.cmake), so a user's set needs only the 4-state one, the Yosys-written
+# block, to show the generator's output and the testbench's generality; a Verilator build of a
+# testbench costs twice an Icarus one on a small set. A long set whose block configuration a
+# committed set already replays in Icarus (the same Yosys-written block at the same parameters)
+# replays in Verilator instead, where it takes a quarter to a seventh of Icarus's time (a two-frame
+# small-build disparity set 4 s against 29 s; docs/performance.md, "CI time").
 function(scw_replay_user_set set fixture title)
+  cmake_parse_arguments(PARSE_ARGV 3 arg "" "" "SIMULATORS")
   set(_sims icarus)
-  if(ARGN STREQUAL "BOTH")
-    set(_sims verilator icarus)
+  if(arg_SIMULATORS)
+    set(_sims ${arg_SIMULATORS})
   endif()
   foreach(_sim IN LISTS _sims)
     add_test(NAME "vectors:${title} in ${_sim}"
@@ -53,10 +58,11 @@ add_test(NAME "vectors:scw vectors rectify --config thesis makes a chessboard se
 set_tests_properties("vectors:scw vectors rectify --config thesis makes a chessboard set and verifies it"
                      PROPERTIES FIXTURES_SETUP scw_thesis_rectify_set)
 scw_replay_user_set(thesis_rectify scw_thesis_rectify_set
-                    "the thesis-size chessboard rectify set replays" BOTH)
+                    "the thesis-size chessboard rectify set replays"
+                    SIMULATORS verilator icarus)
 
 # A labelling set from a user's disparity map: the Tsukuba pair through `scw disparity --out16`,
-# a 64 x 48 crop of it, replayed in both simulators; an 8-bit file is refused naming --out16.
+# a 64 x 48 crop of it, replayed in Icarus; an 8-bit file is refused naming --out16.
 add_test(NAME "vectors:scw vectors labelling from a user's disparity map makes a set"
          COMMAND bash -c "rm -rf user_labelling && '$<TARGET_FILE:scw>' disparity \
                           --left '${_tsukuba}/scene1.row3.col3.ppm' \
@@ -98,7 +104,7 @@ set_tests_properties("vectors:scw vectors rectify refuses a pair not of the cali
 
 # A warning set from a user's object tables: a labelling set's object and status CSVs (the
 # committed shapes set, 5 frames) on a rig of one's own at the small build (a reciprocal table
-# below 32 px), verified, then replayed in both simulators.
+# below 32 px), verified, then replayed in Icarus.
 add_test(NAME "vectors:scw vectors warning from a user's object tables makes a set"
          COMMAND bash -c "rm -rf user_warning && '$<TARGET_FILE:scw>' vectors warning \
                           --objects '${PROJECT_SOURCE_DIR}/vectors/labelling/shapes/expected_objects.csv' \
@@ -120,7 +126,7 @@ set_tests_properties("vectors:scw vectors warning refuses a value wider than its
 
 # Several frames back to back at a pipeline build: two pairs (the Tsukuba pair and the raw
 # chessboard pair, each cropped at 128 96) through the small build's stage at P = 1 (N 9,
-# 128 x 96), verified, then replayed in both simulators.
+# 128 x 96), verified, then replayed.
 add_test(NAME "vectors:scw vectors disparity makes a two-frame set at the small build"
          COMMAND bash -c "rm -rf user_disparity_small && '$<TARGET_FILE:scw>' vectors disparity \
                           --config small --ppc 1 \
@@ -131,8 +137,9 @@ add_test(NAME "vectors:scw vectors disparity makes a two-frame set at the small 
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("vectors:scw vectors disparity makes a two-frame set at the small build"
                      PROPERTIES FIXTURES_SETUP scw_user_disparity_small_set)
+# Verilator only: pipeline/small_street replays this stage at these parameters in Icarus.
 scw_replay_user_set(user_disparity_small scw_user_disparity_small_set
-                    "the two-frame small-build disparity set replays")
+                    "the two-frame small-build disparity set replays" SIMULATORS verilator)
 add_test(NAME "vectors:scw vectors disparity refuses a window the build is not made with"
          COMMAND $<TARGET_FILE:scw> vectors disparity --config thesis --ppc 1 --window 9
                  --left "${_tsukuba}/scene1.row3.col3.ppm" --right "${_tsukuba}/scene1.row3.col4.ppm"
@@ -142,7 +149,7 @@ set_tests_properties("vectors:scw vectors disparity refuses a window the build i
                      PROPERTIES PASS_REGULAR_EXPRESSION "the thesis build matches with N = 21; give --window 21")
 
 # Two maps back to back at a crop smaller than the build (40 x 30): the Tsukuba pair matched in
-# opencv and in thesis mode, labelled, verified and replayed in both simulators.
+# opencv and in thesis mode, labelled, verified and replayed in Icarus.
 add_test(NAME "vectors:scw vectors labelling makes a two-frame set from a user's maps"
          COMMAND bash -c "rm -rf user_labelling2 && for m in opencv thesis; do \
                             '$<TARGET_FILE:scw>' disparity --left '${_tsukuba}/scene1.row3.col3.ppm' \
@@ -161,7 +168,7 @@ scw_replay_user_set(user_labelling2 scw_user_labelling2_set
 
 # A pipeline set of raw frames and a calibration: three synthetic street frames taken as raw and
 # rectified with a made-up 64 x 32 rig's grid maps (tests/vectors/small_rig_64x32.yml), checked
-# against the Verilated small top by the generator, verified and replayed in both simulators.
+# against the Verilated small top by the generator, verified and replayed.
 add_test(NAME "vectors:scw vectors pipeline makes a set of raw frames with a calibration"
          COMMAND bash -c "rm -rf user_pipeline_calib && '$<TARGET_FILE:scw>' vectors pipeline \
                           --config small --frames 3 \
@@ -171,8 +178,10 @@ add_test(NAME "vectors:scw vectors pipeline makes a set of raw frames with a cal
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("vectors:scw vectors pipeline makes a set of raw frames with a calibration"
                      PROPERTIES FIXTURES_SETUP scw_user_pipeline_calib_set)
+# Verilator only: pipeline/small_street replays the small top in Icarus.
 scw_replay_user_set(user_pipeline_calib scw_user_pipeline_calib_set
-                    "the pipeline set of raw frames with a calibration replays")
+                    "the pipeline set of raw frames with a calibration replays"
+                    SIMULATORS verilator)
 add_test(NAME "vectors:scw vectors pipeline refuses a calibration of another size"
          COMMAND $<TARGET_FILE:scw> vectors pipeline --config small --frames 1
                  --calib "${_chess}/derived_stereo_calibration_helper.yml" --out user_badcalib
@@ -198,7 +207,7 @@ add_test(NAME "vectors:scw vectors pipeline --sequence equals the same pairs giv
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 
 # Two raw pairs back to back through one rectify stage (the chessboard pair, then the same pair
-# swapped), one map: verified and replayed in both simulators.
+# swapped), one map: verified and replayed in Icarus.
 add_test(NAME "vectors:scw vectors rectify makes a two-frame set from a user's raw pairs"
          COMMAND bash -c "rm -rf user_rectify2 && '$<TARGET_FILE:scw>' vectors rectify \
                           --left '${_chess}/left01.jpg' '${_chess}/right01.jpg' \
@@ -229,7 +238,7 @@ set_tests_properties("vectors:scw vectors road makes a set from a user's maps at
 scw_replay_user_set(user_road scw_user_road_set "the road set from a user's maps replays")
 
 # --frames K: a preset's one frame sent twice back to back (the stage from reset, then again
-# with its state from the first frame), verified and replayed in both simulators.
+# with its state from the first frame), verified and replayed in Icarus.
 add_test(NAME "vectors:scw vectors rectify --frames 2 repeats the shift preset"
          COMMAND bash -c "rm -rf frames_shift && '$<TARGET_FILE:scw>' vectors rectify \
                           --preset shift --frames 2 --out frames_shift && \
