@@ -38,8 +38,6 @@ ModelKind model_kind_from_string(const std::string& s) {
 
 namespace {
 
-std::size_t idx(ObjectClass c) { return static_cast<std::size_t>(c); }
-
 bool all_finite(const Features& f) {
   for (const double v : to_array(f))
     if (!std::isfinite(v)) return false;
@@ -82,12 +80,12 @@ void check_varies(const ClassStats& st, const std::string& which, const TrainOpt
 void check_counts(ModelKind kind, const std::vector<LabelledFeatures>& rows,
                   const TrainOptions& o) {
   std::array<int, kNumClasses> n{};
-  for (const auto& r : rows) ++n[idx(r.cls)];
+  for (const auto& r : rows) ++n[class_index(r.cls)];
   for (const ObjectClass c : kAllClasses) {
     if (kind == ModelKind::kParallelepiped && c == ObjectClass::kOther) continue;
-    if (n[idx(c)] < kMinRowsPerClass)
+    if (n[class_index(c)] < kMinRowsPerClass)
       throw std::invalid_argument(
-          o.source + ": " + std::to_string(n[idx(c)]) + " rows of class '" + to_string(c) +
+          o.source + ": " + std::to_string(n[class_index(c)]) + " rows of class '" + to_string(c) +
           "'; training the " + to_string(kind) + " classifier needs at least " +
           std::to_string(kMinRowsPerClass) + " rows of each of " +
           (kind == ModelKind::kParallelepiped ? "pedestrian and bike (other rows are not used)"

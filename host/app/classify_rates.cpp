@@ -8,8 +8,6 @@
 namespace scw::app {
 namespace {
 
-std::size_t idx(ObjectClass c) { return static_cast<std::size_t>(c); }
-
 std::string pct(double v) {
   char b[16];
   std::snprintf(b, sizeof b, "%6.2f%%", v);
@@ -28,8 +26,8 @@ Evaluation evaluate(const Classifier& classifier, const std::vector<LabelledFeat
   Evaluation e;
   for (const auto& r : rows) {
     const ObjectClass p = classifier.classify(r.f);
-    ++e.confusion[idx(r.cls)][idx(p)];
-    ClassRates& cr = e.by_class[idx(r.cls)];
+    ++e.confusion[class_index(r.cls)][class_index(p)];
+    ClassRates& cr = e.by_class[class_index(r.cls)];
     ++cr.rows;
     if (p == r.cls)
       ++cr.correct;
@@ -41,7 +39,7 @@ Evaluation evaluate(const Classifier& classifier, const std::vector<LabelledFeat
 
 std::string row_counts(const std::vector<LabelledFeatures>& rows) {
   int n[kNumClasses] = {};
-  for (const auto& r : rows) ++n[idx(r.cls)];
+  for (const auto& r : rows) ++n[class_index(r.cls)];
   return std::to_string(rows.size()) + " rows (" + std::to_string(n[1]) + " pedestrian, " +
          std::to_string(n[2]) + " bike, " + std::to_string(n[0]) + " other)";
 }
@@ -77,7 +75,7 @@ std::string confusion_table(const std::string& name, const Evaluation& e) {
     std::string line = std::string("  ") + to_string(c);
     line.resize(12, ' ');
     for (const ObjectClass p : {ObjectClass::kPedestrian, ObjectClass::kBike, ObjectClass::kOther})
-      line += num(e.confusion[idx(c)][idx(p)], 10);
+      line += num(e.confusion[class_index(c)][class_index(p)], 10);
     t += line + "\n";
   }
   return t;

@@ -32,6 +32,9 @@ inline constexpr std::size_t kNumClasses = 3;
 inline constexpr std::array<ObjectClass, kNumClasses> kAllClasses{
     ObjectClass::kOther, ObjectClass::kPedestrian, ObjectClass::kBike};
 
+/// A class's index in ClassRates tables and kAllClasses.
+inline constexpr std::size_t class_index(ObjectClass c) { return static_cast<std::size_t>(c); }
+
 /// "other", "pedestrian" or "bike".
 const char* to_string(ObjectClass c);
 /// The inverse of to_string(ObjectClass) (exact, lower case); std::invalid_argument naming the

@@ -13,7 +13,7 @@
 namespace scw::cli {
 namespace {
 
-void run(const disparity::FilesOptions& o) {
+void run_disparity(const disparity::FilesOptions& o) {
   const auto r = disparity::run_disparity_files(o, std::cerr);
   std::string wrote;
   for (const auto& f : r.written) wrote += (wrote.empty() ? "" : ", ") + f;
@@ -76,7 +76,7 @@ void add_disparity_command(CLI::App& app) {
                   "(cv::StereoBM's CV_16S output in opencv mode; invalid 0 in thesis mode)");
   cmd->add_option("--color", o->color,
                   "Colour picture (COLORMAP_JET over min .. max disparity, invalid black)");
-  cmd->callback([o] { run(*o); });
+  cmd->callback([o] { run_disparity(*o); });
 }
 
 }  // namespace scw::cli

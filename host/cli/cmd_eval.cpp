@@ -21,11 +21,11 @@ namespace {
 namespace fs = std::filesystem;
 namespace ev = host::eval;
 
-struct Options {
+struct EvalOptions {
   std::string truth, results, json, plot, severity_plot;
 };
 
-void run(const Options& o) {
+void run_eval(const EvalOptions& o) {
   const ev::TruthFile truth = ev::read_truth(o.truth);
   const ev::ResultsFile results = ev::read_results(o.results);
   ev::EvalReport report = ev::compare(truth, results);
@@ -53,7 +53,7 @@ void run(const Options& o) {
 }  // namespace
 
 void add_eval_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<EvalOptions>();
   auto* cmd = app.add_subcommand(
       "eval", "Compare scw run's results.jsonl with a synthetic scene's truth (scw scene): "
               "relative distance error against the thesis's 5 % bar, severity per frame");
@@ -68,7 +68,7 @@ void add_eval_command(CLI::App& app) {
                   "Distance-error plot (default: distance_error.png beside results.jsonl)");
   cmd->add_option("--severity-plot", o->severity_plot,
                   "Severity-per-frame plot (default: severity.png beside results.jsonl)");
-  cmd->callback([o] { run(*o); });
+  cmd->callback([o] { run_eval(*o); });
 }
 
 }  // namespace scw::cli

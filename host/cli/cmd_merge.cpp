@@ -13,7 +13,7 @@ namespace scw::cli {
 
 namespace {
 
-struct Options {
+struct MergeOptions {
   std::vector<std::string> shards;
   std::string out_dir;
 };
@@ -21,7 +21,7 @@ struct Options {
 }  // namespace
 
 void add_merge_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<MergeOptions>();
   auto* cmd = app.add_subcommand(
       "merge",
       "Join the output folders of the N shards of one run (--shard I/N of scw run, sim, "

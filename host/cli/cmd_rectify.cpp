@@ -18,7 +18,7 @@
 namespace scw::cli {
 namespace {
 
-struct Options {
+struct RectifyOptions {
   std::string calib;
   std::string left;
   std::string right;
@@ -48,7 +48,7 @@ cv::Mat side_by_side(const cv::Mat& left, const cv::Mat& right) {
   return out;
 }
 
-void run(const Options& o) {
+void run_rectify(const RectifyOptions& o) {
   const cv::Mat left = host::io::read_grey_image(o.left);
   const cv::Mat right = host::io::read_grey_image(o.right);
   const auto calib = rectify::load_stereo_calibration(o.calib, left.size());
@@ -95,7 +95,7 @@ void run(const Options& o) {
 }  // namespace
 
 void add_rectify_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<RectifyOptions>();
   auto* cmd = app.add_subcommand(
       "rectify", "Rectify a raw stereo pair with the rectify stage's fixed-point streaming model");
   cmd->add_option("--calib", o->calib,
@@ -111,7 +111,7 @@ void add_rectify_command(CLI::App& app) {
                   "cv::stereoRectify alpha: -1 OpenCV default scaling, 0 valid pixels only, "
                   "1 all raw pixels")
       ->check(CLI::Range(-1.0, 1.0));
-  cmd->callback([o] { run(*o); });
+  cmd->callback([o] { run_rectify(*o); });
 }
 
 }  // namespace scw::cli

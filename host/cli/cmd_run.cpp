@@ -21,7 +21,7 @@
 namespace scw::cli {
 namespace {
 
-struct Options {
+struct RunOptions {
   std::string left, right, sequence, out_dir;
   app::CameraInput camera;
   std::string tiles, engine = "cpp", mode = disparity::mode_name(disparity::kDefaultMode);
@@ -30,7 +30,7 @@ struct Options {
   int segments = 0;
 };
 
-void run(Options& o, const CLI::App& cmd) {
+void run_run(RunOptions& o, const CLI::App& cmd) {
   if (!o.tiles.empty()) std::tie(o.run.tiles_x, o.run.tiles_y) = labelling::parse_tiles(o.tiles);
   o.run.mode = disparity::mode_from_name(o.mode);
   const auto pairs = app::pairs_of(o.left, o.right, o.sequence);
@@ -78,7 +78,7 @@ void run(Options& o, const CLI::App& cmd) {
 }  // namespace
 
 void add_run_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<RunOptions>();
   auto* cmd = app.add_subcommand(
       "run", "The whole chain (rectify, disparity, labelling, warning) on the stages' C++ models, "
              "then classification, tracking and the warning overlay");
@@ -136,7 +136,7 @@ void add_run_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--overlay-on-labels", o->run.overlay_on_labels,
                 "Draw the overlay on the label picture instead of the left image");
-  cmd->callback([o, cmd] { run(*o, *cmd); });
+  cmd->callback([o, cmd] { run_run(*o, *cmd); });
 }
 
 }  // namespace scw::cli

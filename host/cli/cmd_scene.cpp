@@ -16,7 +16,7 @@
 namespace scw::cli {
 namespace {
 
-struct Options {
+struct SceneOptions {
   std::string preset, out_dir;
   int frames = 0;
   bool frames_given = false;
@@ -25,7 +25,7 @@ struct Options {
   double grain = -1.0;  // < 0: the preset's
 };
 
-void run(const Options& o) {
+void run_scene(const SceneOptions& o) {
   namespace sc = host::scene;
   // Everything that can be refused is refused before the ray tables take their seconds.
   const sc::Sequence seq = sc::make_preset(
@@ -65,7 +65,7 @@ std::string preset_help() {
 }  // namespace
 
 void add_scene_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<SceneOptions>();
   auto* cmd = app.add_subcommand(
       "scene",
       "Render a synthetic street scene (textured road and objects) through a calibrated, "
@@ -89,7 +89,7 @@ void add_scene_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 100.0));
   cmd->callback([o, frames] {
     o->frames_given = frames->count() > 0;
-    run(*o);
+    run_scene(*o);
   });
 }
 

@@ -22,7 +22,7 @@ namespace {
 
 using hls::labelling::Object;
 
-struct Options {
+struct SegmentOptions {
   std::string disparity;
   int min_area = 1;
   std::string tiles = "4x4";  // speckled street maps need more labels than one tile holds
@@ -35,7 +35,7 @@ struct Options {
 
 using host::io::write_image;
 
-void run(const Options& o) {
+void run_segment(const SegmentOptions& o) {
   const auto [tiles_x, tiles_y] = labelling::parse_tiles(o.tiles);
   if (!(o.floor >= 0.0) || o.floor * 16.0 > 32767.0)
     throw std::runtime_error("--floor " + std::to_string(o.floor) +
@@ -89,7 +89,7 @@ void run(const Options& o) {
 }  // namespace
 
 void add_segment_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<SegmentOptions>();
   auto* cmd = app.add_subcommand(
       "segment",
       "Connected-component labelling of a disparity map into objects with the labelling "
@@ -126,7 +126,7 @@ void add_segment_command(CLI::App& app) {
       ->required();
   cmd->callback([o, scale] {
     o->scale_given = scale->count() > 0;
-    run(*o);
+    run_segment(*o);
   });
 }
 

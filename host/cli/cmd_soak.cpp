@@ -19,7 +19,7 @@
 namespace scw::cli {
 namespace {
 
-struct Options {
+struct SoakOptions {
   std::string config = "small";
   host::soak::SoakOptions soak;
   int resets = 0;
@@ -33,7 +33,7 @@ struct Options {
 void say(const std::string& line) { std::cerr << line << "\n"; }
 
 /// Runs and prints; false when anything differed.
-bool run(Options& o) {
+bool run_soak(SoakOptions& o) {
   if (o.config != "small")
     throw std::invalid_argument("--config " + o.config +
                                 ": the soak runs the small build (every block Verilated); give "
@@ -73,7 +73,7 @@ bool run(Options& o) {
 
 /// --seeds K: a soak for each seed from --seed on, its summary written to DIR/seed_S.json as
 /// --json writes it; --shard I/N runs the block of seeds shard_range gives (docs/slurm.md).
-bool run_seeds(Options& o, const CLI::App& cmd) {
+bool run_seeds(SoakOptions& o, const CLI::App& cmd) {
   if (o.out_dir.empty() || !o.json.empty())
     throw std::invalid_argument(
         "--seeds writes each seed's summary to DIR/seed_S.json: give "
@@ -86,7 +86,7 @@ bool run_seeds(Options& o, const CLI::App& cmd) {
   for (std::size_t k = seeds.begin; k < seeds.end; ++k) {
     o.soak.seed = first + k;
     o.json = o.out_dir + "/seed_" + std::to_string(o.soak.seed) + ".json";
-    ok = run(o) && ok;
+    ok = run_soak(o) && ok;
   }
   const std::size_t total = static_cast<std::size_t>(o.seeds);
   write_manifest_if_sharded(o.shard, cmd, {"out-dir"}, {"", {}, {}, total, "seeds", "", {}},
@@ -97,7 +97,7 @@ bool run_seeds(Options& o, const CLI::App& cmd) {
 }  // namespace
 
 void add_soak_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<SoakOptions>();
   auto* cmd = app.add_subcommand(
       "soak", "Many frames through the Verilated pipeline against the C++ chain and the "
               "floating-point reference, with broken frames, random stalls and resets in "
@@ -134,7 +134,7 @@ void add_soak_command(CLI::App& app) {
     bool ok = false;
     try {
       if (!o->shard.empty() && o->seeds == 0) throw std::invalid_argument(kSoakNoShard);
-      ok = o->seeds > 0 ? run_seeds(*o, *cmd) : run(*o);
+      ok = o->seeds > 0 ? run_seeds(*o, *cmd) : run_soak(*o);
     } catch (const std::invalid_argument& e) {
       std::cerr << "scw soak: " << e.what() << "\n";
       throw CLI::RuntimeError(2);

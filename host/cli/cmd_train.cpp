@@ -14,7 +14,7 @@
 namespace scw::cli {
 namespace {
 
-struct Options {
+struct TrainOptions {
   std::string features, out, model = "svm", test, features_out;
   int synthesize = 0;
   unsigned seed = 1;
@@ -22,7 +22,7 @@ struct Options {
   app::TrainOptions train;
 };
 
-void run(Options& o) {
+void run_train(TrainOptions& o) {
   if (o.features.empty() && o.synthesize == 0)
     throw std::runtime_error(
         "scw train needs rows: --features F.csv (header class,hu1,hu2,hu3,width_m,height_m), "
@@ -74,7 +74,7 @@ void run(Options& o) {
 }  // namespace
 
 void add_train_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<TrainOptions>();
   auto* cmd = app.add_subcommand(
       "train",
       "Trains an object classifier (thesis 5.3.3: pedestrian, bike, other from Hu moments 1-3 "
@@ -130,7 +130,7 @@ void add_train_command(CLI::App& app) {
                   "ann: at most this many RPROP epochs")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
-  cmd->callback([o] { run(*o); });
+  cmd->callback([o] { run_train(*o); });
 }
 
 }  // namespace scw::cli

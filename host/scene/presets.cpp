@@ -16,7 +16,6 @@ namespace {
 // Sizes (width along x, height, depth along z), metres.
 const cv::Vec3d kPedestrian{0.60, 1.75, 0.40};
 const cv::Vec3d kCyclist{1.80, 1.80, 0.60};  // side on: long along x
-const cv::Vec3d kCar{1.80, 1.50, 4.20};
 
 /// An object's look: a grey mean between 60 and 150 (dark clothes, a light car), off the road's
 /// 110 and below the sky's 170 .. 200 so the eye finds it, and a seed of its own.

@@ -12,7 +12,6 @@ namespace {
 constexpr double kPavementGrey = 135.0, kPavementContrast = 30.0;
 constexpr double kKerbGrey = 165.0, kKerbContrast = 16.0;
 constexpr double kBuildingDepth = 10.0;
-const cv::Vec3d kCar{1.80, 1.50, 4.20};
 
 /// A uniform number in [0, 1) from a key (the street's layout is the same in every frame).
 double unit(std::uint32_t key) {

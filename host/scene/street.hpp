@@ -5,11 +5,16 @@
 #pragma once
 
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <vector>
 
 #include "host/scene/scene.hpp"
 
 namespace scw::host::scene {
+
+/// A car's size (width along x, height, depth along z), metres: the parked cars here and the
+/// presets' cars.
+inline const cv::Vec3d kCar{1.80, 1.50, 4.20};
 
 /// The street across (vehicle x, metres; the car drives along x = 0 in a 3.5 m lane).
 struct StreetLayout {

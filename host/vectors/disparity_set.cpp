@@ -19,7 +19,6 @@ namespace scw::vectors {
 namespace {
 
 using hls::disparity::DisparityConfig;
-using Frame = DisparityFrame;
 
 /// A fixed integer hash: reproducible texture on every platform and library version.
 std::uint8_t hash_pixel(int x, int y) {
@@ -33,9 +32,9 @@ std::uint8_t hash_pixel(int x, int y) {
 /// 64 x 24: a random right image; the left sees it shifted by 3 px (x < 24), 8 px (24 .. 43)
 /// and 14 px (x >= 44), with a 12 x 12 block at 11 px in front (x 28 .. 39, y 6 .. 17);
 /// left pixels whose source falls off the right image are fresh noise.
-Frame synthetic() {
+DisparityFrame synthetic() {
   constexpr int w = 64, h = 24;
-  Frame f;
+  DisparityFrame f;
   cv::Mat right(h, w, CV_8UC1), left(h, w, CV_8UC1);
   f.shift = cv::Mat(h, w, CV_8UC1);
   for (int y = 0; y < h; ++y)
@@ -62,7 +61,7 @@ Frame synthetic() {
 }
 
 /// A 96 x 48 crop of the bundled Tsukuba pair (read as every command reads it), opencv mode.
-Frame tsukuba(const std::filesystem::path& dir) {
+DisparityFrame tsukuba(const std::filesystem::path& dir) {
   const auto read = [&](const char* name) {
     const auto p = dir / name;
     if (!std::filesystem::exists(p))
@@ -71,7 +70,7 @@ Frame tsukuba(const std::filesystem::path& dir) {
     return host::io::read_grey_image(p.string());
   };
   const cv::Rect roi(144, 112, 96, 48);
-  Frame f;
+  DisparityFrame f;
   f.left = {read("scene1.row3.col3.ppm")(roi).clone()};
   f.right = {read("scene1.row3.col4.ppm")(roi).clone()};
   f.window = 9;
@@ -88,15 +87,15 @@ Frame tsukuba(const std::filesystem::path& dir) {
 
 /// The Tsukuba crop with the left edge band: its columns 7 .. 18 decided among the candidates
 /// whose window fits the right image, from 4 of them on (DisparityConfig::edge_candidates).
-Frame tsukuba_edge(const std::filesystem::path& dir) {
-  Frame f = tsukuba(dir);
+DisparityFrame tsukuba_edge(const std::filesystem::path& dir) {
+  DisparityFrame f = tsukuba(dir);
   f.cfg.edge_candidates = 4;
   f.description += "; the left edge band decided from 4 candidates (edge_candidates 4)";
   return f;
 }
 
 /// How many of the computed pixels find the frame's true disparity.
-void count_known_shifts(const Frame& f, const std::vector<std::uint16_t>& ref,
+void count_known_shifts(const DisparityFrame& f, const std::vector<std::uint16_t>& ref,
                         std::uint16_t invalid, DisparitySetSummary& sum) {
   sum.known_shifts = true;
   for (int i = 0; i < f.shift.cols * f.shift.rows; ++i) {
@@ -114,7 +113,7 @@ cv::Mat stacked(const std::vector<cv::Mat>& frames) {
 }
 
 template <typename Params>
-nlohmann::json config_json(const Frame& f, std::uint16_t invalid) {
+nlohmann::json config_json(const DisparityFrame& f, std::uint16_t invalid) {
   const DisparityConfig& cfg = f.cfg;
   return {{"width", f.left[0].cols},
           {"height", f.left[0].rows},
@@ -140,9 +139,9 @@ nlohmann::json config_json(const Frame& f, std::uint16_t invalid) {
 }
 
 template <int P, typename In, typename Out>
-void write_files(const std::filesystem::path& dir, const Frame& f, const nlohmann::json& config,
-                 const std::vector<In>& l, const std::vector<In>& r, const std::vector<Out>& expect,
-                 const std::vector<std::uint16_t>& ref) {
+void write_files(const std::filesystem::path& dir, const DisparityFrame& f,
+                 const nlohmann::json& config, const std::vector<In>& l, const std::vector<In>& r,
+                 const std::vector<Out>& expect, const std::vector<std::uint16_t>& ref) {
   constexpr int kPpc = P;
   auto disp_layout = pixel_beat_layout(kPpc, 16);
   disp_layout["signed"] = true;
@@ -161,7 +160,7 @@ void write_files(const std::filesystem::path& dir, const Frame& f, const nlohman
 
 /// Throws std::invalid_argument unless `f`'s frames fit Params (and its crop its dmin).
 template <typename Params>
-void check_fits(const Frame& f) {
+void check_fits(const DisparityFrame& f) {
   const int w = f.left[0].cols, h = f.left[0].rows, n = Params::kNumDisp;
   const std::string size = std::to_string(w) + "x" + std::to_string(h);
   if (w > Params::kMaxWidthPx || h > Params::kMaxHeight || w % Params::kPpc != 0 ||
@@ -178,7 +177,7 @@ void check_fits(const Frame& f) {
 }
 
 template <typename Params>
-DisparitySetSummary run(const Frame& f, const std::filesystem::path& dir) {
+DisparitySetSummary run(const DisparityFrame& f, const std::filesystem::path& dir) {
   constexpr int kPpc = Params::kPpc, N = Params::kWindow;
   check_fits<Params>(f);
   const int w = f.left[0].cols, h = f.left[0].rows;
@@ -230,7 +229,7 @@ DisparitySetSummary run(const Frame& f, const std::filesystem::path& dir) {
 
 /// Runs `f` at its P on a pipeline build.
 template <template <int> class Build>
-DisparitySetSummary run_build(const Frame& f, const std::filesystem::path& dir) {
+DisparitySetSummary run_build(const DisparityFrame& f, const std::filesystem::path& dir) {
   switch (f.ppc) {
     case 1:
       return run<typename Build<1>::disparity>(f, dir);
@@ -277,7 +276,7 @@ DisparityFrame disparity_frames(const UserPair& u) {
     throw std::invalid_argument("vectors disparity: give as many --right images as --left (" +
                                 std::to_string(u.left.size()) + " and " +
                                 std::to_string(u.right.size()) + ")");
-  Frame f;
+  DisparityFrame f;
   cv::Rect roi;
   cv::Size first;
   for (std::size_t i = 0; i < u.left.size(); ++i) {

@@ -38,7 +38,6 @@ using hls::labelling::Object;
 using VecParams = LabellingVecParams;
 using Layout = sim::BeatLayout<LabelPacket>;
 using Expect = LabellingExpect;
-using Frame = LabellingFrame;
 using Preset = LabellingPreset;
 constexpr int kMaxObjects = VecParams::kMaxObjects;
 
@@ -257,7 +256,7 @@ std::string status_text(const FrameStatus& s) {
 
 /// Throws unless the model's frame is what the reference says it must be.
 template <typename Params>
-void check_frame(const Preset& p, const Frame& in, const FrameOut& got) {
+void check_frame(const Preset& p, const LabellingFrame& in, const FrameOut& got) {
   const std::string at = "vectors labelling: frame '" + in.name + "': ";
   const auto ref =
       reference::labelling_reference(in.d.ptr<std::uint16_t>(), in.d.cols, in.d.rows, p.cfg);
@@ -328,7 +327,7 @@ template <typename InBeat>
 std::vector<InBeat> stream_beats(const Preset& p, std::vector<cv::Mat>& images) {
   std::vector<InBeat> beats;
   const int w = p.cfg.width, h = p.cfg.height;
-  for (const Frame& f : p.frames) {
+  for (const LabellingFrame& f : p.frames) {
     if (f.d.type() != CV_16UC1 || f.d.cols != w || f.d.rows != h || !f.d.isContinuous())
       throw std::logic_error("vectors labelling: a frame is not the configured " +
                              std::to_string(w) + "x" + std::to_string(h) + " 16-bit");

@@ -27,7 +27,6 @@ namespace scw::vectors {
 namespace {
 
 using hls::rectify::MapPoint;
-using Frame = RectifyFrame;
 
 constexpr int kFracBits = RectifyRtlParams::kFracBits;
 constexpr int kRtlPpc = kRectifyVecRtlPpc;
@@ -63,9 +62,9 @@ rectify::FixedMap as_fixed(const std::vector<MapPoint>& m, int w, int h) {
   return f;
 }
 
-Frame synthetic(const std::string& preset) {
+RectifyFrame synthetic(const std::string& preset) {
   constexpr int w = kSynthWidth, h = kSynthHeight;
-  Frame f;
+  RectifyFrame f;
   f.raw = {pattern_image(w, h)};
   std::ostringstream d;
   d << "scw_rectify: " << w << "x" << h << " test card (8x8 checks, gradient, hashed texture) ";
@@ -152,8 +151,8 @@ Crop crop_camera(const cv::Mat& raw, const rectify::FixedMap& full, cv::Rect roi
 /// One camera of calibrated raw pairs: the output ROI at `roi_at` of `size` (empty: the whole
 /// image), rectified with the pairs' calibration (both cameras' maps plan the one lead), a frame
 /// a pair. `source` names the camera's images in the description.
-Frame calibrated(const UserCalibratedPair& u, cv::Point roi_at, cv::Size size,
-                 const std::string& source) {
+RectifyFrame calibrated(const UserCalibratedPair& u, cv::Point roi_at, cv::Size size,
+                        const std::string& source) {
   if (u.left.empty() || u.left.size() != u.right.size())
     throw std::invalid_argument("vectors rectify: give as many --right images as --left (" +
                                 std::to_string(u.left.size()) + " and " +
@@ -186,7 +185,7 @@ Frame calibrated(const UserCalibratedPair& u, cv::Point roi_at, cv::Size size,
                              std::to_string(roi.height) + " ROI must lie inside the " +
                              std::to_string(full_l.width) + " x " + std::to_string(full_l.height) +
                              " rectified image");
-  Frame f;
+  RectifyFrame f;
   cv::Point origin;
   for (std::size_t i = 0; i < u.left.size(); ++i) {
     const Crop cl = crop_camera(left_raw[i], full_l, roi, u.left[i].filename().string());
@@ -212,7 +211,8 @@ Frame calibrated(const UserCalibratedPair& u, cv::Point roi_at, cv::Size size,
 }
 
 /// The bundled chessboard pair: its files must be in `dir`.
-Frame chessboard(const std::filesystem::path& dir, cv::Point roi_at, cv::Size size, bool right) {
+RectifyFrame chessboard(const std::filesystem::path& dir, cv::Point roi_at, cv::Size size,
+                        bool right) {
   const UserCalibratedPair u{{dir / "left01.jpg"},
                              {dir / "right01.jpg"},
                              dir / "derived_stereo_calibration_helper.yml",
@@ -281,7 +281,7 @@ void check_rtl(const RectifyRtl& rtl, const hls::rectify::RectifyConfig& cfg,
 }
 
 template <typename Params>
-void write_files(const std::filesystem::path& dir, const Frame& f, int lead_rows,
+void write_files(const std::filesystem::path& dir, const RectifyFrame& f, int lead_rows,
                  const std::vector<typename Params::pixel_beat>& raw_beats,
                  const std::vector<typename Params::map_beat>& map_beats,
                  const std::vector<typename Params::pixel_beat>& expect,
@@ -314,8 +314,9 @@ void write_files(const std::filesystem::path& dir, const Frame& f, int lead_rows
 }
 
 template <typename Params>
-RectifySetSummary run(const Frame& f, const std::string& preset, const sim::StallPattern& pattern,
-                      const RectifyRtl& rtl, const std::filesystem::path& dir) {
+RectifySetSummary run(const RectifyFrame& f, const std::string& preset,
+                      const sim::StallPattern& pattern, const RectifyRtl& rtl,
+                      const std::filesystem::path& dir) {
   constexpr int P = Params::kPpc;
   using PixelBeat = typename Params::pixel_beat;
   using MapBeat = typename Params::map_beat;

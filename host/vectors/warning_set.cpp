@@ -41,13 +41,12 @@ using host::warning::WarningSetup;
 
 using VecParams = WarningVecParams;
 using OutLayout = sim::BeatLayout<ResultPacket>;
-using Frame = WarningFrame;
 using Preset = WarningPreset;
 using Shape = WarningShape;
 
-Frame expect(std::string name, std::vector<Object> t, Severity sev, bool tunnel, bool close,
-             int index) {
-  Frame f;
+WarningFrame expect(std::string name, std::vector<Object> t, Severity sev, bool tunnel, bool close,
+                    int index) {
+  WarningFrame f;
   f.name = std::move(name);
   f.objects = std::move(t);
   f.check_severity = true;
@@ -87,7 +86,7 @@ Object bike(int shift_px = 0) {
   return make_object(863 + shift_px, 266, 805, 785 + shift_px, 185, 952 + shift_px, 351);
 }
 
-std::vector<Frame> thesis_frames(const WarningSetup& s) {
+std::vector<WarningFrame> thesis_frames(const WarningSetup& s) {
   const double lane = s.vehicle_origin.x();  // the tunnel's centre line, camera x
   // Upright boxes on the road in the tunnel at 8, 15 and 30 m depth (D about 6.4, 13.4, 28.4 m).
   const Object car8 = fixtures::place_box(s, lane, 8.0, 1.6, 1.4);
@@ -166,7 +165,7 @@ Preset random_preset() {
   p.height = 391;
   std::mt19937 rng(kRandomSeed);
   for (int i = 0; i < kRandomFrames; ++i) {
-    Frame f;
+    WarningFrame f;
     f.name = "random " + std::to_string(i);
     // 0 .. 24 objects, so that empty and one-object frames occur too.
     f.objects =
@@ -199,14 +198,14 @@ Preset malformed() {
   const Object b = fixtures::place_box(s, lane + 3.0, 12.0, 1.0, 1.6);  // beside it
   const Object c = fixtures::place_box(s, lane - 0.5, 10.0, 0.8, 1.2);  // in the tunnel: high
   auto frame = [](std::string name, std::vector<Object> t, Shape shape) {
-    Frame f;
+    WarningFrame f;
     f.name = std::move(name);
     f.objects = std::move(t);
     f.shape = shape;
     return f;
   };
   auto flagged = [&](std::string name, bool tile, bool obj, bool err) {
-    Frame f = frame(std::move(name), {a, c}, Shape::kGood);
+    WarningFrame f = frame(std::move(name), {a, c}, Shape::kGood);
     f.flags.tile_overflow = tile;
     f.flags.object_overflow = obj;
     f.flags.stream_error = err;
@@ -242,7 +241,7 @@ Preset malformed() {
 
 // ---- running and checking ----
 
-std::vector<LabelPacket> frame_words(const Frame& f) {
+std::vector<LabelPacket> frame_words(const WarningFrame& f) {
   std::vector<LabelPacket> w;
   for (const Object& o : f.objects) {
     LabelPacket p;
@@ -267,7 +266,7 @@ std::vector<LabelPacket> frame_words(const Frame& f) {
 /// What the stage must report for a frame: a plain fold of evaluate() over its objects, and the
 /// flags as docs/warning.md states them (not the kernel's code).
 template <typename Params>
-FrameResult expected_result(const Frame& f, const WarningConfig& cfg) {
+FrameResult expected_result(const WarningFrame& f, const WarningConfig& cfg) {
   FrameResult r = fixtures::fold_table<Params>(f.objects, cfg);
   if (f.shape == Shape::kLastNoStatus) {
     r.stream_error = true;
@@ -280,7 +279,7 @@ FrameResult expected_result(const Frame& f, const WarningConfig& cfg) {
 }
 
 template <typename Params>
-void check_frame(const Frame& f, const FrameResult& got, const WarningConfig& cfg) {
+void check_frame(const WarningFrame& f, const FrameResult& got, const WarningConfig& cfg) {
   const std::string at = "vectors warning: frame '" + f.name + "': ";
   if (got != expected_result<Params>(f, cfg))
     throw std::logic_error(at + "the model's result differs from a plain fold of evaluate()");
@@ -336,7 +335,7 @@ std::string b01(bool v) { return v ? "1" : "0"; }
 /// Every frame's words back to back; `closing` gets each frame's closing word, a line of in.hex.
 std::vector<LabelPacket> stream_words(const Preset& p, std::vector<std::size_t>& closing) {
   std::vector<LabelPacket> in;
-  for (const Frame& f : p.frames) {
+  for (const WarningFrame& f : p.frames) {
     const auto w = frame_words(f);
     in.insert(in.end(), w.begin(), w.end());
     closing.push_back(in.size() - 1);
@@ -518,7 +517,7 @@ WarningPreset warning_user_preset(const UserTables& u) {
   }
   const auto tables = read_object_tables(u.objects, u.status);
   for (std::size_t i = 0; i < tables.size(); ++i) {
-    Frame f;
+    WarningFrame f;
     f.name = "frame " + std::to_string(i);
     f.objects = tables[i].objects;
     f.flags = tables[i].flags;

@@ -25,13 +25,13 @@ using scw::host::warning::OverlayStyle;
 using scw::host::warning::severity_bgr;
 using scw::host::warning::WarningSetup;
 
-constexpr int kWidth = 1280, kHeight = 480;
+constexpr int kImageWidth = 1280, kImageHeight = 480;
 
 /// f 700 px, b 0.54 m, principal point at the image centre, thesis vehicle origin.
 WarningSetup setup() {
   WarningSetup s;
-  s.cu_px = kWidth / 2.0;
-  s.cv_px = kHeight / 2.0;
+  s.cu_px = kImageWidth / 2.0;
+  s.cv_px = kImageHeight / 2.0;
   return s;
 }
 
@@ -81,8 +81,8 @@ void maybe_save(const cv::Mat& img, const char* name) {
 
 TEST_CASE("overlay keeps the image size and takes grey or BGR", "[ref][warning][overlay]") {
   const WarningSetup s = setup();
-  const cv::Mat grey(kHeight, kWidth, CV_8UC1, cv::Scalar(90));
-  const cv::Mat colour(kHeight, kWidth, CV_8UC3, cv::Scalar(90, 90, 90));
+  const cv::Mat grey(kImageHeight, kImageWidth, CV_8UC1, cv::Scalar(90));
+  const cv::Mat colour(kImageHeight, kImageWidth, CV_8UC3, cv::Scalar(90, 90, 90));
   const OverlayObject o = bike(Severity::kMedium);
   for (const cv::Mat* in : {&grey, &colour}) {
     const cv::Mat out = draw_overlay(*in, s, &o);
@@ -101,7 +101,8 @@ TEST_CASE("overlay: the tunnel's distance marks sit where the pinhole model puts
           "[ref][warning][overlay]") {
   const WarningSetup s = setup();
   const OverlayStyle style;
-  const cv::Mat img = draw_overlay(cv::Mat(kHeight, kWidth, CV_8UC1, cv::Scalar(0)), s, nullptr);
+  const cv::Mat img =
+      draw_overlay(cv::Mat(kImageHeight, kImageWidth, CV_8UC1, cv::Scalar(0)), s, nullptr);
   maybe_save(img, "overlay_empty");
   const cv::Vec3b tunnel = bgr(style.tunnel_bgr);
   const double f = s.focal_px, cu = s.cu_px, cv_ = s.cv_px;
@@ -140,7 +141,7 @@ TEST_CASE("overlay: the tunnel's distance marks sit where the pinhole model puts
   std::vector<double> expected;
   for (double zv : {5.0, 10.0, 15.0, 20.0})
     for (double yv : {0.0, th}) expected.push_back(cv_ - f * (ty + yv) / (tz + zv));
-  for (int v = 40; v < kHeight; ++v) {
+  for (int v = 40; v < kImageHeight; ++v) {
     if (img.at<cv::Vec3b>(v, uc) != tunnel) continue;
     bool explained = false;
     for (double e : expected) explained = explained || std::abs(v - e) <= 1.0;
@@ -157,7 +158,7 @@ TEST_CASE("overlay: the deciding object's cuboid is drawn in its severity colour
           "[ref][warning][overlay]") {
   const WarningSetup s = setup();
   const OverlayStyle style;
-  const cv::Mat black(kHeight, kWidth, CV_8UC3, cv::Scalar(0, 0, 0));
+  const cv::Mat black(kImageHeight, kImageWidth, CV_8UC3, cv::Scalar(0, 0, 0));
   for (Severity sev : {Severity::kLow, Severity::kMedium, Severity::kHigh}) {
     const OverlayObject o = bike(sev);
     const cv::Mat img = draw_overlay(black, s, &o);
@@ -202,7 +203,8 @@ TEST_CASE("overlay captions and the frame result's deciding object", "[ref][warn
 
   // The caption is drawn in the upper left corner.
   const WarningSetup s = setup();
-  const cv::Mat img = draw_overlay(cv::Mat(kHeight, kWidth, CV_8UC1, cv::Scalar(0)), s, &close);
+  const cv::Mat img =
+      draw_overlay(cv::Mat(kImageHeight, kImageWidth, CV_8UC1, cv::Scalar(0)), s, &close);
   maybe_save(img, "overlay_too_close");
   cv::Mat grey;
   cv::extractChannel(img(cv::Rect(0, 0, 200, 40)), grey, 2);  // red channel: the high colour
