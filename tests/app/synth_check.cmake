@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # Runs `scw synth` and checks its result (cmake -P; used by synth.cmake). Variables:
 #   SCW   the scw executable
-#   MODE  small: scw_road and scw_rectify at the small build (the two quickest stages), JSON
+#   MODE  small: scw_rectify and scw_rectify_map_grid at the small build (the two quickest
+#         stages, 5 to 7 s each in Yosys), JSON
 #         checked;
 #         unknown_config: must fail and name every config
 #   WORK  a folder of its own (emptied first), so tests can run side by side
@@ -36,7 +37,7 @@ if(NOT MODE STREQUAL "small")
   message(FATAL_ERROR "synth_check.cmake: unknown MODE '${MODE}'")
 endif()
 
-execute_process(COMMAND "${SCW}" synth --config small --ppc 1 --modules scw_road,scw_rectify
+execute_process(COMMAND "${SCW}" synth --config small --ppc 1 --modules scw_rectify,scw_rectify_map_grid
                         --json synth.json
                 WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
@@ -64,7 +65,7 @@ expect_eq("number of modules" "${n}" "2")
 
 # The pipeline's order, whatever order --modules named them in.
 set(i 0)
-foreach(module scw_rectify scw_road)
+foreach(module scw_rectify_map_grid scw_rectify)
   string(JSON m GET "${doc}" modules ${i})
   string(JSON name GET "${m}" module)
   expect_eq("modules[${i}].module" "${name}" "${module}")
@@ -124,7 +125,7 @@ endforeach()
 
 # The parameters are the small build's, by the RTL's names (SmallPipeline<1> in
 # hls/pipeline/pipeline_params.hpp): present and positive.
-string(JSON p GET "${doc}" modules 0 params)
+string(JSON p GET "${doc}" modules 1 params)
 foreach(key Ppc MaxWidthPx MaxHeight Rows)
   string(JSON v GET "${p}" ${key})
   if(NOT v MATCHES "^[1-9][0-9]*$")
@@ -133,12 +134,12 @@ foreach(key Ppc MaxWidthPx MaxHeight Rows)
 endforeach()
 string(JSON ppc_param GET "${p}" Ppc)
 expect_eq("scw_rectify.params.Ppc" "${ppc_param}" "1")
-string(JSON v GET "${doc}" modules 1 params MaxWidthPx)
+string(JSON v GET "${doc}" modules 0 params GridLog2)
 if(NOT v MATCHES "^[1-9][0-9]*$")
-  message(FATAL_ERROR "scw_road.params.MaxWidthPx = '${v}'")
+  message(FATAL_ERROR "scw_rectify_map_grid.params.GridLog2 = '${v}'")
 endif()
 
-foreach(log small_p1_scw_rectify.log small_p1_scw_road.log)
+foreach(log small_p1_scw_rectify.log small_p1_scw_rectify_map_grid.log)
   if(NOT EXISTS "${WORK}/synth_logs/${log}")
     message(FATAL_ERROR "no Yosys log synth_logs/${log} beside the JSON")
   endif()
