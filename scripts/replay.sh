@@ -13,10 +13,12 @@
 #              as synthesis reads it.
 # Extra +plusargs go to the testbench (e.g. +stalls=0). Prints the testbench's PASS line, or its
 # first differing beat; exits non-zero on any failure.
-# SCW_REPLAY_RUNTIME=DIR (optional): a folder where Verilator's own runtime objects (verilated.o
-# and friends, the same for every testbench built with the same Verilator and options: about
-# 7 of a replay's 10 s of compile) are kept after the first build and reused by the next; the
-# test suite sets it, so its dozens of replays compile the runtime once.
+# SCW_REPLAY_CACHE=DIR (optional): a folder replays share, so that what one builds the next
+# does not build again: Verilator's own runtime objects (verilated.o and friends, the same for
+# every testbench built with the same Verilator and options: about 7 of a replay's 10 s of
+# compile), each Verilated testbench, and each block as Yosys writes it for Icarus. An entry is
+# keyed by the tool's version, its options and parameters and the content of every file it
+# reads, so an edited source or another parameter builds anew. The test suite sets it.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 usage() {
@@ -171,51 +173,87 @@ for kv in "${plusargs[@]}"; do args+=("+${kv%%=*}=$(field "${kv#*=}")"); done
 args+=("${extra[@]}")
 
 mkdir -p "$work"
+: >"$work/build.log"
+cache="${SCW_REPLAY_CACHE:-}"
+# digest TEXT FILE...: a key of TEXT and the files' contents.
+digest() { { echo "$1"; shift; cat "$@"; } | md5sum | cut -c1-16; }
+# cached NAME KEY RESULT COMMAND...: runs COMMAND, which makes the file RESULT, unless the cache
+# holds RESULT from a run with the same KEY, which is then copied instead. One replay at a time
+# per key: a second one waits for the first's result.
+cached() {
+  local name="$1" key="$2" result="$3"
+  shift 3
+  if [ -z "$cache" ]; then "$@"; return; fi
+  local entry="$cache/$name-$key"
+  mkdir -p "$cache"
+  (
+    flock 9
+    if [ -f "$entry/${result##*/}" ]; then
+      cp "$entry/${result##*/}" "$result"
+      echo "replay.sh: $name built before, taken from $entry" >>"$work/build.log"
+    else
+      "$@"
+      mkdir -p "$entry" && cp "$result" "$entry/"
+    fi
+  ) 9>"$entry.lock"
+}
+rel=("${sources[@]#"$root"/}" "${tb_files[@]#"$root"/}")
+
 if [ "$simulator" = verilator ]; then
   gargs=()
   for kv in "${tb_values[@]}"; do gargs+=("-G$kv"); done
   # --binary, with the build step run here (`--binary` is --main --exe --build --timing), so
   # a kept runtime can be put in place between Verilator's C++ and its make.
   vargs=(--cc --main --exe --timing -Wno-fatal -Wno-lint -Wno-style)
-  verilator "${vargs[@]}" --top-module "$tb_module" \
-    "${gargs[@]}" "${sources[@]}" "${tb_files[@]}" -Mdir "$work/obj" >"$work/build.log" 2>&1 ||
-    { cat "$work/build.log"; exit 1; }
-  runtime=""
-  if [ -n "${SCW_REPLAY_RUNTIME:-}" ]; then
-    # Keyed by the Verilator and the options, which are all the runtime's compile depends on.
-    runtime="$SCW_REPLAY_RUNTIME/$( (verilator --version; echo "${vargs[*]}") | md5sum | cut -c1-12)"
-    mkdir -p "$runtime"
-    # Copied without their times: newer than the makefile Verilator just wrote, make takes
-    # them as built.
-    (flock 9; cp "$runtime"/verilated*.[od] "$work/obj/" 2>/dev/null || true) 9>"$runtime.lock"
-  fi
-  make -C "$work/obj" -f "V$tb_module.mk" >>"$work/build.log" 2>&1 ||
-    { cat "$work/build.log"; exit 1; }
-  if [ -n "$runtime" ] && ! [ -e "$runtime/verilated.o" ]; then
-    (flock 9; [ -e "$runtime/verilated.o" ] || cp "$work/obj"/verilated*.[od] "$runtime/") \
-      9>"$runtime.lock"
-  fi
+  build_verilator() {
+    verilator "${vargs[@]}" --top-module "$tb_module" \
+      "${gargs[@]}" "${sources[@]}" "${tb_files[@]}" -Mdir "$work/obj" >>"$work/build.log" 2>&1 ||
+      { cat "$work/build.log"; exit 1; }
+    local runtime=""
+    if [ -n "$cache" ]; then
+      # Keyed by the Verilator and the options, which are all the runtime's compile depends on.
+      runtime="$cache/runtime-$(digest "$(verilator --version) ${vargs[*]}")"
+      mkdir -p "$runtime"
+      # Copied without their times: newer than the makefile Verilator just wrote, make takes
+      # them as built.
+      (flock 9; cp "$runtime"/verilated*.[od] "$work/obj/" 2>/dev/null || true) 9>"$runtime.lock"
+    fi
+    make -C "$work/obj" -f "V$tb_module.mk" >>"$work/build.log" 2>&1 ||
+      { cat "$work/build.log"; exit 1; }
+    if [ -n "$runtime" ] && ! [ -e "$runtime/verilated.o" ]; then
+      (flock 9; [ -e "$runtime/verilated.o" ] || cp "$work/obj"/verilated*.[od] "$runtime/") \
+        9>"$runtime.lock"
+    fi
+  }
+  mkdir -p "$work/obj"
+  cached verilator \
+    "$(digest "$(verilator --version) ${vargs[*]} $tb_module ${gargs[*]} ${rel[*]}" \
+      "${sources[@]}" "${tb_files[@]}")" "$work/obj/V$tb_module" build_verilator
   "$work/obj/V$tb_module" "${args[@]}" | tee "$work/run.log"
 else
   command -v iverilog >/dev/null ||
     { echo "replay.sh: iverilog is missing: apt-get install iverilog (scripts/deps.sh)" >&2; exit 1; }
   chparam=""
   for kv in "${dut_values[@]}"; do chparam+=" -set ${kv%%=*} ${kv#*=}"; done
-  {
-    echo "read_verilog -sv ${sources[*]}"
-    echo "chparam$chparam $top"
-    echo "hierarchy -check -top $top"
-    if [ "$flatten" = 1 ]; then echo "proc; flatten; opt_clean"; else echo "proc; opt_clean"; fi
-    echo "write_verilog -noattr $work/dut.v"
-  } >"$work/dut.ys"
-  yosys -q -l "$work/yosys.log" -s "$work/dut.ys" >/dev/null 2>&1 ||
-    { tail -20 "$work/yosys.log"; exit 1; }
+  script="read_verilog -sv ${sources[*]}
+chparam$chparam $top
+hierarchy -check -top $top"
+  if [ "$flatten" = 1 ]; then script+=$'\nproc; flatten; opt_clean'; else script+=$'\nproc; opt_clean'; fi
+  write_dut() {
+    printf '%s\nwrite_verilog -noattr %s\n' "$script" "$work/dut.v" >"$work/dut.ys"
+    yosys -q -l "$work/yosys.log" -s "$work/dut.ys" >/dev/null 2>&1 ||
+      { tail -20 "$work/yosys.log"; exit 1; }
+  }
+  # The block as Yosys writes it depends on the block's parameters only, not the testbench's:
+  # every set of a block at one size shares it.
+  cached yosys "$(digest "$(yosys -V) ${script//"$root"/} ${rel[*]}" "${sources[@]}")" \
+    "$work/dut.v" write_dut
   pargs=()
   for kv in "${tb_values[@]}"; do pargs+=(-P "$tb_module.$kv"); done
   # The block as Yosys wrote it has no parameters left: Icarus notes the testbench's overrides
   # as "parameter not found" (in build.log), which is expected.
   iverilog -g2012 -s "$tb_module" "${pargs[@]}" -o "$work/sim.vvp" "$work/dut.v" \
-    "${tb_files[@]}" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+    "${tb_files[@]}" >>"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
   vvp -n "$work/sim.vvp" "${args[@]}" | tee "$work/run.log"
 fi
 # A testbench that ends without its verdict (a $finish elsewhere) must not pass.

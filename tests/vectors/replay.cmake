@@ -4,9 +4,10 @@
 # SystemVerilog in Verilator (2-state), and the block as Yosys writes it in Icarus Verilog
 # (4-state), each with idle input cycles and output backpressure. A new set under vectors/ is
 # replayed by adding its folder; nothing here names a set.
-# Every replay keeps Verilator's runtime objects in one folder of the build (scripts/replay.sh,
-# SCW_REPLAY_RUNTIME): compiled by the first, reused by the rest.
-set(SCW_REPLAY_ENV "SCW_REPLAY_RUNTIME=${CMAKE_BINARY_DIR}/replay-runtime")
+# Every replay shares one cache in the build (scripts/replay.sh, SCW_REPLAY_CACHE): Verilator's
+# runtime objects compiled by the first replay, and each testbench or Yosys-written block built
+# once for every set (or the wrong-beat copy) that needs the same one.
+set(SCW_REPLAY_ENV "SCW_REPLAY_CACHE=${CMAKE_BINARY_DIR}/replay-cache")
 file(GLOB _scw_set_manifests CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/vectors/*/*/manifest.json")
 list(SORT _scw_set_manifests)
 foreach(_manifest IN LISTS _scw_set_manifests)
