@@ -246,7 +246,7 @@ hierarchy -check -top $top"
   }
   # The block as Yosys writes it depends on the block's parameters only, not the testbench's:
   # every set of a block at one size shares it.
-  cached yosys "$(digest "$(yosys -V) ${script//"$root"/} ${rel[*]}" "${sources[@]}")" \
+  cached yosys "$(digest "$(yosys -V) ${script//"$root"/}" "${sources[@]}")" \
     "$work/dut.v" write_dut
   pargs=()
   for kv in "${tb_values[@]}"; do pargs+=(-P "$tb_module.$kv"); done

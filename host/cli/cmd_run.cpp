@@ -30,7 +30,7 @@ struct RunOptions {
   int segments = 0;
 };
 
-void run_run(RunOptions& o, const CLI::App& cmd) {
+void run_chain(RunOptions& o, const CLI::App& cmd) {
   if (!o.tiles.empty()) std::tie(o.run.tiles_x, o.run.tiles_y) = labelling::parse_tiles(o.tiles);
   o.run.mode = disparity::mode_from_name(o.mode);
   const auto pairs = app::pairs_of(o.left, o.right, o.sequence);
@@ -136,7 +136,7 @@ void add_run_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--overlay-on-labels", o->run.overlay_on_labels,
                 "Draw the overlay on the label picture instead of the left image");
-  cmd->callback([o, cmd] { run_run(*o, *cmd); });
+  cmd->callback([o, cmd] { run_chain(*o, *cmd); });
 }
 
 }  // namespace scw::cli

@@ -12,8 +12,13 @@
 #include "hls/warning/warning_params.hpp"
 #include "host/warning/overlay.hpp"
 #include "host/warning/setup.hpp"
+#include "tests/warning/karlsruhe_like.hpp"
 
 namespace {
+
+using scw::test::karlsruhe_like;
+using scw::test::kImageHeight;
+using scw::test::kImageWidth;
 
 using scw::hls::warning::FrameResult;
 using scw::hls::warning::Severity;
@@ -24,16 +29,6 @@ using scw::host::warning::OverlayObject;
 using scw::host::warning::OverlayStyle;
 using scw::host::warning::severity_bgr;
 using scw::host::warning::WarningSetup;
-
-constexpr int kImageWidth = 1280, kImageHeight = 480;
-
-/// f 700 px, b 0.54 m, principal point at the image centre, thesis vehicle origin.
-WarningSetup setup() {
-  WarningSetup s;
-  s.cu_px = kImageWidth / 2.0;
-  s.cv_px = kImageHeight / 2.0;
-  return s;
-}
 
 /// The worked example's bike (tests/warning/test_warning_ref.cpp): d = 805 / 16 px.
 OverlayObject bike(Severity sev) {
@@ -80,7 +75,7 @@ void maybe_save(const cv::Mat& img, const char* name) {
 }  // namespace
 
 TEST_CASE("overlay keeps the image size and takes grey or BGR", "[ref][warning][overlay]") {
-  const WarningSetup s = setup();
+  const WarningSetup s = karlsruhe_like();
   const cv::Mat grey(kImageHeight, kImageWidth, CV_8UC1, cv::Scalar(90));
   const cv::Mat colour(kImageHeight, kImageWidth, CV_8UC3, cv::Scalar(90, 90, 90));
   const OverlayObject o = bike(Severity::kMedium);
@@ -99,7 +94,7 @@ TEST_CASE("overlay keeps the image size and takes grey or BGR", "[ref][warning][
 
 TEST_CASE("overlay: the tunnel's distance marks sit where the pinhole model puts them",
           "[ref][warning][overlay]") {
-  const WarningSetup s = setup();
+  const WarningSetup s = karlsruhe_like();
   const OverlayStyle style;
   const cv::Mat img =
       draw_overlay(cv::Mat(kImageHeight, kImageWidth, CV_8UC1, cv::Scalar(0)), s, nullptr);
@@ -156,7 +151,7 @@ TEST_CASE("overlay: the tunnel's distance marks sit where the pinhole model puts
 
 TEST_CASE("overlay: the deciding object's cuboid is drawn in its severity colour",
           "[ref][warning][overlay]") {
-  const WarningSetup s = setup();
+  const WarningSetup s = karlsruhe_like();
   const OverlayStyle style;
   const cv::Mat black(kImageHeight, kImageWidth, CV_8UC3, cv::Scalar(0, 0, 0));
   for (Severity sev : {Severity::kLow, Severity::kMedium, Severity::kHigh}) {
@@ -202,7 +197,7 @@ TEST_CASE("overlay captions and the frame result's deciding object", "[ref][warn
   CHECK(overlay_caption(&none) == "no obstacle");
 
   // The caption is drawn in the upper left corner.
-  const WarningSetup s = setup();
+  const WarningSetup s = karlsruhe_like();
   const cv::Mat img =
       draw_overlay(cv::Mat(kImageHeight, kImageWidth, CV_8UC1, cv::Scalar(0)), s, &close);
   maybe_save(img, "overlay_too_close");

@@ -16,8 +16,13 @@
 #include "hls/warning/warning_params.hpp"
 #include "host/warning/reference.hpp"
 #include "host/warning/setup.hpp"
+#include "tests/warning/karlsruhe_like.hpp"
 
 namespace {
+
+using scw::test::karlsruhe_like;
+using scw::test::kImageHeight;
+using scw::test::kImageWidth;
 
 using scw::hls::labelling::Object;
 using scw::hls::warning::ObjectEval;
@@ -33,20 +38,10 @@ using scw::host::warning::WarningSetup;
 /// The thesis configuration's stage: a 128 px reciprocal table, disparities searched to 64 px.
 using Params = scw::hls::warning::WarningParams<128>;
 
-constexpr int kWidth = 1280, kHeight = 480;
 constexpr int kFirstCode = 20 * 16, kLastCode = 64 * 16;  // d = 20 .. 64 px in 1/16 px
 constexpr double kTol = 0.01;                             // 1 cm
 
-/// Karlsruhe-like: f 700 px, b 0.54 m (WarningSetup's defaults), principal point at the centre
-/// of the 1280 x 480 image, thesis vehicle origin (-0.30, -1.20, 1.65) m, d_limit 64 px.
-WarningSetup karlsruhe_like() {
-  WarningSetup s;
-  s.cu_px = kWidth / 2.0;
-  s.cv_px = kHeight / 2.0;
-  return s;
-}
-
-/// Thesis-rig-like: f 1000 px, b 0.60 m, otherwise as above.
+/// Thesis-rig-like: f 1000 px, b 0.60 m, otherwise as karlsruhe_like().
 WarningSetup thesis_rig_like() {
   WarningSetup s = karlsruhe_like();
   s.focal_px = 1000.0;
@@ -140,10 +135,10 @@ constexpr std::array<std::array<int, 4>, 5> kShapes{
 SweepResult sweep(const WarningSetup& s) {
   const WarningConfig cfg = to_fixed(s);
   std::vector<int> us, vs;
-  for (int u = 0; u < kWidth; u += 16) us.push_back(u);
-  us.push_back(kWidth - 1);
-  for (int v = 0; v < kHeight; v += 16) vs.push_back(v);
-  vs.push_back(kHeight - 1);
+  for (int u = 0; u < kImageWidth; u += 16) us.push_back(u);
+  us.push_back(kImageWidth - 1);
+  for (int v = 0; v < kImageHeight; v += 16) vs.push_back(v);
+  vs.push_back(kImageHeight - 1);
 
   SweepResult r;
   for (int dq = kFirstCode; dq <= kLastCode; ++dq) {
@@ -151,9 +146,9 @@ SweepResult sweep(const WarningSetup& s) {
       for (std::size_t iv = 0; iv < vs.size(); ++iv) {
         const int u = us[iu], v = vs[iv];
         const auto& sh = kShapes[(static_cast<std::size_t>(dq) + iu + 3 * iv) % kShapes.size()];
-        const Object o =
-            make_object(u, v, dq, std::max(0, u - sh[0]), std::max(0, v - sh[1]),
-                        std::min(kWidth - 1, u + sh[2]), std::min(kHeight - 1, v + sh[3]));
+        const Object o = make_object(u, v, dq, std::max(0, u - sh[0]), std::max(0, v - sh[1]),
+                                     std::min(kImageWidth - 1, u + sh[2]),
+                                     std::min(kImageHeight - 1, v + sh[3]));
         const ObjectEval e = scw::hls::warning::evaluate<Params>(o, cfg);
         const RefEval f = evaluate_ref(o, s);
         ++r.objects;
