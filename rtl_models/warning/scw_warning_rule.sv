@@ -101,7 +101,7 @@ module scw_warning_rule #(
   logic [33:0] q0_m, q0_p;              // L^2
   logic [34:0] q1_m, q2_m, q1_p, q2_p;  // H L, H H[16:0]
   logic [17:0] q3_m, q3_p;              // H[17] ? H : 0
-  logic [TW-1:0] t2;
+  logic [TW-4:0] t8_2;                   // T / 8 = 2 S1 + A
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       p0_m <= 37'(a1) * 37'(s2_1[16:0]);
@@ -111,7 +111,7 @@ module scw_warning_rule #(
       q1_m <= 35'(h1) * 35'(lo1);
       q2_m <= 35'(h1) * 35'(hp1);
       q3_m <= h1[17] ? h1 : '0;
-      t2   <= {1'b0, s1_1, 4'b0} + {17'b0, a1, 3'b0};
+      t8_2 <= {1'b0, s1_1, 1'b0} + (TW - 3)'(a1);
       p0_p <= p0_m;
       p1_p <= p1_m;
       p2_p <= p2_m;
@@ -168,10 +168,15 @@ module scw_warning_rule #(
   );
 
   // ---- 44 .. 47: num ------------------------------------------------------------------------
+  // T's low 3 bits are zero, so T / 8 is what waits. Delayed, the zeros cost nothing in the
+  // netlist (Yosys removes them), but its opt_dff found them constant one stage per pass: 43
+  // passes, a third of the stage's synthesis time.
   logic [TW-1:0] t45;
-  scw_warning_delay #(.Width(TW), .Depth(RootStage)) u_t_delay (
-    .clk_i, .en_i, .d_i(t2), .q_o(t45)
+  logic [TW-4:0] t8_45;
+  scw_warning_delay #(.Width(TW - 3), .Depth(RootStage)) u_t_delay (
+    .clk_i, .en_i, .d_i(t8_2), .q_o(t8_45)
   );
+  assign t45 = {t8_45, 3'b000};
 
   // k R = KR0 + KR1 2^24: R[23:0] k (24 x 8 bits) and R[35:24] k (12 x 8), one DSP each
   logic [31:0] kr0_m, kr0_p;
