@@ -2,10 +2,10 @@
 // Sub-sample ray tables (host/scene/rays.hpp).
 #include "host/scene/rays.hpp"
 
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core/utility.hpp>
 #include <stdexcept>
 #include <string>
-
-#include <opencv2/calib3d.hpp>
 
 namespace scw::host::scene {
 
@@ -34,19 +34,23 @@ RayTable::RayTable(const StereoRig& rig, Side side, int subsamples)
     throw std::invalid_argument("ray table: " + std::to_string(n_) +
                                 " sub-samples per axis; give 1 .. 8");
   xy_.create(size_.height * n_, size_.width * n_, CV_32FC2);
-  // One sample row at a time: the double-precision scratch stays small.
-  std::vector<cv::Point2d> uv(static_cast<std::size_t>(xy_.cols));
-  for (int sy = 0; sy < xy_.rows; ++sy) {
-    const double v = sy / n_ + subsample_offset(sy % n_, n_);
-    for (int sx = 0; sx < xy_.cols; ++sx)
-      uv[static_cast<std::size_t>(sx)] = {sx / n_ + subsample_offset(sx % n_, n_), v};
-    const std::vector<cv::Point2d> xy = undistort(rig.camera(side), uv);
-    auto* row = xy_.ptr<cv::Vec2f>(sy);
-    for (int sx = 0; sx < xy_.cols; ++sx) {
-      const cv::Point2d& p = xy[static_cast<std::size_t>(sx)];
-      row[sx] = {static_cast<float>(p.x), static_cast<float>(p.y)};
+  // One sample row at a time, the rows on OpenCV's threads (a point's undistortion depends on it
+  // alone, so the table is the same with any number of threads); the double-precision scratch
+  // stays small.
+  cv::parallel_for_(cv::Range(0, xy_.rows), [&](const cv::Range& rows) {
+    std::vector<cv::Point2d> uv(static_cast<std::size_t>(xy_.cols));
+    for (int sy = rows.start; sy < rows.end; ++sy) {
+      const double v = sy / n_ + subsample_offset(sy % n_, n_);
+      for (int sx = 0; sx < xy_.cols; ++sx)
+        uv[static_cast<std::size_t>(sx)] = {sx / n_ + subsample_offset(sx % n_, n_), v};
+      const std::vector<cv::Point2d> xy = undistort(rig.camera(side), uv);
+      auto* row = xy_.ptr<cv::Vec2f>(sy);
+      for (int sx = 0; sx < xy_.cols; ++sx) {
+        const cv::Point2d& p = xy[static_cast<std::size_t>(sx)];
+        row[sx] = {static_cast<float>(p.x), static_cast<float>(p.y)};
+      }
     }
-  }
+  });
 }
 
 }  // namespace scw::host::scene
