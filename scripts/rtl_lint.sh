@@ -21,7 +21,10 @@ usage() {
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
-is_package() { grep -Eq '^[[:space:]]*package[[:space:]]+[A-Za-z_]' "$1"; }
+package_re='^[[:space:]]*package[[:space:]]+[A-Za-z_]'
+# The files among "$@" that hold a package, one grep for all of them: a grep and a dirname per
+# file were most of a lint's time (0.6 of 0.8 s), paid by every lint, synthesis and replay.
+packages_among() { grep -lE "$package_re" "$@" || true; }
 
 # Prints "file <path>" and "libdir <dir>" lines for <module>, paths relative to the root.
 list_files() {
@@ -37,14 +40,16 @@ list_files() {
     return 1
   fi
   top_file="$hits"
-  stage_dir="$(dirname "$top_file")"
-  if is_package "$top_file"; then
+  stage_dir="${top_file%/*}"
+
+  local -a all pkgs mods libdirs
+  local -A is_pkg=()
+  mapfile -t all < <(find rtl_models -type f -name '*.sv' | LC_ALL=C sort)
+  while IFS= read -r f; do is_pkg["$f"]=1; done < <(packages_among "${all[@]}")
+  if [[ -n "${is_pkg[$top_file]-}" ]]; then
     echo "rtl_lint: ${top_file} is a package, not a module" >&2
     return 1
   fi
-
-  local -a all pkgs mods libdirs
-  mapfile -t all < <(find rtl_models -type f -name '*.sv' | LC_ALL=C sort)
   pkgs=()
   mods=()
   libdirs=()
@@ -53,13 +58,13 @@ list_files() {
   fi
   for f in "${all[@]}"; do
     [[ "$f" == rtl_models/common/scw_pkg.sv ]] && continue
-    if is_package "$f"; then
+    if [[ -n "${is_pkg[$f]-}" ]]; then
       pkgs+=("$f")
     fi
   done
   for f in "${all[@]}"; do
-    is_package "$f" && continue
-    d="$(dirname "$f")"
+    [[ -n "${is_pkg[$f]-}" ]] && continue
+    d="${f%/*}"
     if [[ "$f" == rtl_models/common/* || "$d" == "$stage_dir" ]]; then
       mods+=("$f")
     elif [[ " ${libdirs[*]-} " != *" $d "* ]]; then
@@ -115,11 +120,9 @@ trap 'rm -rf "$work"' EXIT
 # package as soon as one is used in an expression). Only that rule, only for packages.
 {
   echo '`verilator_config'
-  for f in "${files[@]}"; do
-    if is_package "$f"; then
-      echo "lint_off -rule UNUSEDPARAM -file \"*/$(basename "$f")\""
-    fi
-  done
+  while IFS= read -r f; do
+    echo "lint_off -rule UNUSEDPARAM -file \"*/${f##*/}\""
+  done < <(packages_among "${files[@]}")
 } > "$work/package_waivers.vlt"
 
 status=0
