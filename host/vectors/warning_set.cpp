@@ -39,9 +39,7 @@ using hls::warning::Severity;
 using hls::warning::WarningConfig;
 using host::warning::WarningSetup;
 
-using VecParams = WarningVecParams;
 using OutLayout = sim::BeatLayout<ResultPacket>;
-using Preset = WarningPreset;
 using Shape = WarningShape;
 
 WarningFrame expect(std::string name, std::vector<Object> t, Severity sev, bool tunnel, bool close,
@@ -137,8 +135,8 @@ std::vector<WarningFrame> thesis_frames(const WarningSetup& s) {
   };
 }
 
-Preset thesis() {
-  Preset p;
+WarningPreset thesis() {
+  WarningPreset p;
   p.setup.cu_px = 640.0;  // the default rig with the principal point at the image centre
   p.setup.cv_px = 240.0;
   p.frames = thesis_frames(p.setup);
@@ -158,8 +156,8 @@ Preset thesis() {
 constexpr std::uint32_t kRandomSeed = 20240531;
 constexpr int kRandomFrames = 64;
 
-Preset random_preset() {
-  Preset p;
+WarningPreset random_preset() {
+  WarningPreset p;
   p.setup = fixtures::karlsruhe_setup();  // d_limit 127 px: codes from 2032 up, some past the table
   p.width = 1344;
   p.height = 391;
@@ -188,8 +186,8 @@ Preset random_preset() {
 
 // ---- malformed: every way the table can break the packet rules, each followed by a good frame
 
-Preset malformed() {
-  Preset p;
+WarningPreset malformed() {
+  WarningPreset p;
   p.setup = fixtures::thesis_setup();
   const WarningSetup& s = p.setup;
   const double lane = s.vehicle_origin.x();
@@ -333,7 +331,7 @@ nlohmann::json out_layout() {
 std::string b01(bool v) { return v ? "1" : "0"; }
 
 /// Every frame's words back to back; `closing` gets each frame's closing word, a line of in.hex.
-std::vector<LabelPacket> stream_words(const Preset& p, std::vector<std::size_t>& closing) {
+std::vector<LabelPacket> stream_words(const WarningPreset& p, std::vector<std::size_t>& closing) {
   std::vector<LabelPacket> in;
   for (const WarningFrame& f : p.frames) {
     const auto w = frame_words(f);
@@ -345,7 +343,7 @@ std::vector<LabelPacket> stream_words(const Preset& p, std::vector<std::size_t>&
 
 /// The model's results, each checked, and the same again under stalls.
 template <typename Params>
-std::vector<ResultPacket> checked_results(const Preset& p, const WarningConfig& cfg,
+std::vector<ResultPacket> checked_results(const WarningPreset& p, const WarningConfig& cfg,
                                           const std::vector<LabelPacket>& in,
                                           std::int64_t& cycles) {
   const auto out = run_model<Params>(cfg, in, p.frames.size(), cycles);
@@ -466,9 +464,10 @@ std::vector<std::string> result_row(std::size_t frame, std::size_t closing, cons
   return row;
 }
 
-void write_files(const std::filesystem::path& dir, const Preset& p, const nlohmann::json& config,
-                 const std::vector<LabelPacket>& in, const std::vector<ResultPacket>& out,
-                 const Rows& word_rows, const Rows& eval_rows, const Rows& result_rows) {
+void write_files(const std::filesystem::path& dir, const WarningPreset& p,
+                 const nlohmann::json& config, const std::vector<LabelPacket>& in,
+                 const std::vector<ResultPacket>& out, const Rows& word_rows, const Rows& eval_rows,
+                 const Rows& result_rows) {
   const auto in_bits = sim::pack_all(in);
   const auto out_bits = sim::pack_all(out);
   VectorWriter vw(dir, "warning", config, p.description);
@@ -506,7 +505,7 @@ WarningPreset warning_preset(const std::string& name) {
 }
 
 WarningPreset warning_user_preset(const UserTables& u) {
-  Preset p;
+  WarningPreset p;
   p.setup = u.setup;
   p.build = u.build;
   p.width = u.width;
@@ -585,7 +584,7 @@ const std::vector<std::string>& warning_builds() {
 }
 
 WarningSetSummary write_warning_set(const WarningPreset& p, const std::filesystem::path& dir) {
-  if (p.build == "vectors") return write_set<VecParams>(p, dir);
+  if (p.build == "vectors") return write_set<WarningVecParams>(p, dir);
   if (p.build == "small") return write_set<hls::pipeline::SmallPipeline<1>::warning>(p, dir);
   if (p.build == "tsukuba") return write_set<hls::pipeline::TsukubaPipeline<1>::warning>(p, dir);
   if (p.build == "thesis") return write_set<hls::pipeline::ThesisPipeline<1>::warning>(p, dir);
