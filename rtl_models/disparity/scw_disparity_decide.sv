@@ -134,12 +134,15 @@ module scw_disparity_decide #(
     invalid_q <= cfg_invalid_i;
   end
 
-  // K for every U: a 256-word ROM in LUTs (U is static, so K is too). A table of constants
-  // rather than a function that searches it: a simulator evaluates the table once, where the
-  // search ran its 256 compares at every clock (a third of this block's simulation time).
-  logic [KW-1:0] k_rom [256];
-  for (genvar i = 0; i < 256; i++) begin : gen_k_rom
-    assign k_rom[i] = KW'(((64'(i) << KShift) + 64'd99) / 64'd100);
+  // K for every U: a 256-word ROM in LUTs (U is static, so K is too). A table filled once
+  // rather than a function that searches it: the search ran its 256 compares at every clock in a
+  // simulator (a third of this block's simulation time). A memory with its contents set by an
+  // initial loop, not an array of 256 constant assigns: Yosys 0.23 turned those into a shift of
+  // one 8,181-bit constant and spent 12 s mapping it, a third of the stage's synthesis (the CI's
+  // guard); as a memory kept in logic it maps by its address bits (docs/performance.md).
+  (* rom_style = "logic" *) logic [KW-1:0] k_rom [256];
+  initial begin
+    for (int i = 0; i < 256; i++) k_rom[i] = KW'(((64'(i) << KShift) + 64'd99) / 64'd100);
   end
   logic [KSplit-1:0] k_lo_q;
   logic [KW-KSplit-1:0] k_hi_q;
