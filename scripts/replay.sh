@@ -205,6 +205,11 @@ if [ "$simulator" = verilator ]; then
   # --binary, with the build step run here (`--binary` is --main --exe --build --timing), so
   # a kept runtime can be put in place between Verilator's C++ and its make.
   vargs=(--cc --main --exe --timing -Wno-fatal -Wno-lint -Wno-style)
+  # The C++ at -O0 rather than Verilator's -Os: a testbench is compiled once and runs a few
+  # thousand beats, so the compile is most of a replay (pipeline/small_street: 11.7 s to compile
+  # and 0.11 s to run at -Os, 7.2 and 0.26 s at -O0; the thesis-size rectify set, the longest
+  # run, 5.0 s against 4.6 s in all; docs/performance.md).
+  mflags=(OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0)
   build_verilator() {
     verilator "${vargs[@]}" --top-module "$tb_module" \
       "${gargs[@]}" "${sources[@]}" "${tb_files[@]}" -Mdir "$work/obj" >>"$work/build.log" 2>&1 ||
@@ -212,13 +217,13 @@ if [ "$simulator" = verilator ]; then
     local runtime=""
     if [ -n "$cache" ]; then
       # Keyed by the Verilator and the options, which are all the runtime's compile depends on.
-      runtime="$cache/runtime-$(digest "$(verilator --version) ${vargs[*]}")"
+      runtime="$cache/runtime-$(digest "$(verilator --version) ${vargs[*]} ${mflags[*]}")"
       mkdir -p "$runtime"
       # Copied without their times: newer than the makefile Verilator just wrote, make takes
       # them as built.
       (flock 9; cp "$runtime"/verilated*.[od] "$work/obj/" 2>/dev/null || true) 9>"$runtime.lock"
     fi
-    make -C "$work/obj" -f "V$tb_module.mk" >>"$work/build.log" 2>&1 ||
+    make -C "$work/obj" -f "V$tb_module.mk" "${mflags[@]}" >>"$work/build.log" 2>&1 ||
       { cat "$work/build.log"; exit 1; }
     if [ -n "$runtime" ] && ! [ -e "$runtime/verilated.o" ]; then
       (flock 9; [ -e "$runtime/verilated.o" ] || cp "$work/obj"/verilated*.[od] "$runtime/") \
@@ -227,7 +232,7 @@ if [ "$simulator" = verilator ]; then
   }
   mkdir -p "$work/obj"
   cached verilator \
-    "$(digest "$(verilator --version) ${vargs[*]} $tb_module ${gargs[*]} ${rel[*]}" \
+    "$(digest "$(verilator --version) ${vargs[*]} ${mflags[*]} $tb_module ${gargs[*]} ${rel[*]}" \
       "${sources[@]}" "${tb_files[@]}")" "$work/obj/V$tb_module" build_verilator
   "$work/obj/V$tb_module" "${args[@]}" | tee "$work/run.log"
 else
