@@ -34,6 +34,7 @@ for t in "${targets[@]}"; do
   [[ " $all " == *" $t "* ]] || { echo "fuzz.sh: no target '$t'; there are: $all" >&2; exit 2; }
 done
 
+mkdir -p "$(dirname "$build")"  # its configure log goes beside it
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DSCW_FUZZ=ON -DBUILD_TESTING=OFF > "$build.configure.log" 2>&1 ||
   { cat "$build.configure.log" >&2; exit 1; }
