@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # Replays one golden vector set against its RTL block with a self-checking testbench, the way a
 # user replays it in their own simulator (docs/vectors.md, "Replaying a set"):
-#   scripts/replay.sh SET WORKDIR [--simulator verilator|icarus] [+plusarg ...]
+#   scripts/replay.sh SET WORKDIR [--simulator verilator|icarus|netlist] [+plusarg ...]
 # The set's manifest.json names its stage; the table below says, per stage, the testbench, the
 # RTL files, which manifest keys are the block's parameters, the testbench's and its plusargs.
 #   verilator  Verilator 5.006 --binary on the SystemVerilog sources (2-state: an X reads as 0).
@@ -11,6 +11,9 @@
 #              stages; write_verilog), which Icarus Verilog 11 runs with the same
 #              testbench, 4-state: an X on a compared output fails the replay. It is the design
 #              as synthesis reads it.
+#   netlist    Icarus as above, on the netlist Yosys 0.23's synth_xilinx makes of the block (the
+#              one scripts/rtl_synth.sh counts and times) with Yosys's models of the 7-series
+#              cells: what synthesis made of the design, not what it read (docs/vectors.md).
 # Extra +plusargs go to the testbench (e.g. +stalls=0). Prints the testbench's PASS line, or its
 # first differing beat; exits non-zero on any failure.
 # SCW_REPLAY_CACHE=DIR (optional): a folder replays share, so that what one builds the next
@@ -22,7 +25,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 usage() {
-  echo "usage: replay.sh SET WORKDIR [--simulator verilator|icarus] [+plusarg ...]" >&2
+  echo "usage: replay.sh SET WORKDIR [--simulator verilator|icarus|netlist] [+plusarg ...]" >&2
   exit 2
 }
 [ $# -ge 2 ] || usage
@@ -39,8 +42,8 @@ while [ $# -gt 0 ]; do
   esac
 done
 case "$simulator" in
-  verilator | icarus) ;;
-  *) echo "replay.sh: --simulator is verilator or icarus, not '$simulator'" >&2; exit 2 ;;
+  verilator | icarus | netlist) ;;
+  *) echo "replay.sh: --simulator is verilator, icarus or netlist, not '$simulator'" >&2; exit 2 ;;
 esac
 [ -f "$set_dir/manifest.json" ] ||
   { echo "replay.sh: no manifest.json in '$set_dir': give a vector set folder" >&2; exit 2; }
@@ -243,7 +246,15 @@ else
   script="read_verilog -sv ${sources[*]}
 chparam$chparam $top
 hierarchy -check -top $top"
-  if [ "$flatten" = 1 ]; then script+=$'\nproc; flatten; opt_clean'; else script+=$'\nproc; opt_clean'; fi
+  cells=()
+  if [ "$simulator" = netlist ]; then
+    [ "$flatten" = 1 ] || { echo "replay.sh: the $stage testbench probes the blocks inside" \
+      "$top, which a flattened netlist no longer has: replay its stages' sets with --simulator" \
+      "netlist" >&2; exit 2; }
+    script+=$'\n'"synth_xilinx -flatten -noiopad -top $top"
+    cells=("$(dirname "$(command -v yosys)")/../share/yosys/xilinx/cells_sim.v")
+  elif [ "$flatten" = 1 ]; then script+=$'\nproc; flatten; opt_clean'
+  else script+=$'\nproc; opt_clean'; fi
   write_dut() {
     printf '%s\nwrite_verilog -noattr %s\n' "$script" "$work/dut.v" >"$work/dut.ys"
     yosys -q -l "$work/yosys.log" -s "$work/dut.ys" >/dev/null 2>&1 ||
@@ -253,12 +264,18 @@ hierarchy -check -top $top"
   # every set of a block at one size shares it.
   cached yosys "$(digest "$(yosys -V) ${script//"$root"/}" "${sources[@]}")" \
     "$work/dut.v" write_dut
+  if [ "$simulator" = netlist ] && grep -qE '^ *RAMB(18|36)E1 ' "$work/dut.v"; then
+    echo "replay.sh: the netlist of $top at this set's parameters has block RAM, and Yosys 0.23's" \
+      "RAMB18E1 and RAMB36E1 models have ports but no behaviour: its reads would be X. Replay" \
+      "it with --simulator icarus (docs/vectors.md, \"The synthesized netlist\")" >&2
+    exit 2
+  fi
   pargs=()
   for kv in "${tb_values[@]}"; do pargs+=(-P "$tb_module.$kv"); done
   # The block as Yosys wrote it has no parameters left: Icarus notes the testbench's overrides
   # as "parameter not found" (in build.log), which is expected.
   iverilog -g2012 -s "$tb_module" "${pargs[@]}" -o "$work/sim.vvp" "$work/dut.v" \
-    "${tb_files[@]}" >>"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+    "${cells[@]}" "${tb_files[@]}" >>"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
   vvp -n "$work/sim.vvp" "${args[@]}" | tee "$work/run.log"
 fi
 # A testbench that ends without its verdict (a $finish elsewhere) must not pass.

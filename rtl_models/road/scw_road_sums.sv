@@ -50,7 +50,13 @@ module scw_road_sums #(
   logic [21:0]          vv3_1_q;  // 3 v^2
   logic [CodeW:0]       pair_a, pair_b, pair_a_q, pair_b_q;
   logic [CntW-1:0]      cnt, cnt1_q, cnt2_q;
-  logic [CodeW+1:0]     bsum2_q;
+  // keep: at Ppc >= 2 bsum2_q = pair_a_q + pair_b_q feeds both the DSP's multiplier and sum d.
+  // Yosys 0.23's xilinx_dsp packed that add and its register into the DSP48E1 as the pre-adder
+  // and its AD register, and left the fabric's bsum2_q undriven (x): sum d became constant 0 in
+  // the netlist, and with it the fit's S_v S_d product (found by replaying road/street on the
+  // synthesized netlist, scripts/replay.sh --simulator netlist; docs/road.md, "Synthesis").
+  // Kept, the register stays in the fabric and feeds both.
+  (* keep *) logic [CodeW+1:0] bsum2_q;
   logic [12:0]          cv, cv2_q;
   logic [22:0]          cvv, cvv2_q;
 
