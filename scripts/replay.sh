@@ -14,7 +14,7 @@
 #   netlist    Icarus as above, on the netlist Yosys 0.23's synth_xilinx makes of the block (the
 #              one scripts/rtl_synth.sh counts and times) with Yosys's models of the 7-series
 #              cells: what synthesis made of the design, not what it read (docs/vectors.md).
-#              SCW_NETLIST_SYNTH_OPTS adds synth_xilinx options ("-nobram -nosrl").
+#              SCW_NETLIST_SYNTH_OPTS adds synth_xilinx options (-nobram).
 # Extra +plusargs go to the testbench (e.g. +stalls=0). Prints the testbench's PASS line, or its
 # first differing beat; exits non-zero on any failure.
 # SCW_REPLAY_CACHE=DIR (optional): a folder replays share, so that what one builds the next
@@ -252,9 +252,12 @@ hierarchy -check -top $top"
     [ "$flatten" = 1 ] || { echo "replay.sh: the $stage testbench probes the blocks inside" \
       "$top, which a flattened netlist no longer has: replay its stages' sets with --simulator" \
       "netlist" >&2; exit 2; }
-    # SCW_NETLIST_SYNTH_OPTS: more synth_xilinx options, e.g. "-nobram -nosrl" to check the rest
-    # of the mapping of a block with block RAM or shift registers (docs/vectors.md).
-    script+=$'\n'"synth_xilinx -flatten -noiopad ${SCW_NETLIST_SYNTH_OPTS:-}${SCW_NETLIST_SYNTH_OPTS:+ }-top $top"
+    # SCW_NETLIST_SYNTH_OPTS: more synth_xilinx options, e.g. -nobram to check the rest of the
+    # mapping of a block with block RAM (docs/vectors.md).
+    # shellcheck source=scripts/synth_flow.sh
+    . "$root/scripts/synth_flow.sh"
+    # shellcheck disable=SC2086 # the options are words
+    script+=$'\n'"$(scw_synth_flow "$top" ${SCW_NETLIST_SYNTH_OPTS:-})"
     cells=("$(dirname "$(command -v yosys)")/../share/yosys/xilinx/cells_sim.v")
   elif [ "$flatten" = 1 ]; then script+=$'\nproc; flatten; opt_clean'
   else script+=$'\nproc; opt_clean'; fi
@@ -271,14 +274,8 @@ hierarchy -check -top $top"
     echo "replay.sh: the netlist of $top at this set's parameters has block RAM, and Yosys 0.23's" \
       "RAMB18E1 and RAMB36E1 models have ports but no behaviour: its reads would be X. Replay" \
       "it with --simulator icarus, or check the rest of its mapping with" \
-      "SCW_NETLIST_SYNTH_OPTS=\"-nobram -nosrl\" (docs/vectors.md, \"The synthesized netlist\")" >&2
+      "SCW_NETLIST_SYNTH_OPTS=-nobram (docs/vectors.md, \"The synthesized netlist\")" >&2
     exit 2
-  fi
-  if [ "$simulator" = netlist ] && grep -qE '^ *SRL(16E|C32E) ' "$work/dut.v"; then
-    echo "replay.sh: note: the netlist has shift registers (SRL16E, SRLC32E), and Yosys 0.23" \
-      "ties their clock enables high (docs/timing.md, \"Two faults of Yosys 0.23\"): a set that" \
-      "stalls an enabled chain fails on them; SCW_NETLIST_SYNTH_OPTS=-nosrl keeps the chains" \
-      "as flip-flops" >&2
   fi
   pargs=()
   for kv in "${tb_values[@]}"; do pargs+=(-P "$tb_module.$kv"); done

@@ -16,7 +16,8 @@
 #   --max-sta-ps N  fail (exit 3) when the worst register-to-register path is longer than N ps
 #
 # Reads the files listed by scripts/rtl_lint.sh --files <module>, applies the parameters
-# with chparam, runs `synth_xilinx -flatten -noiopad -top <module>` (no I/O buffers: a path into
+# with chparam, runs `synth_xilinx -flatten -noiopad -nosrl -top <module>` (scripts/synth_flow.sh:
+# shift registers as flip-flops, as Yosys 0.23 maps their enables wrong; no I/O buffers: a path into
 # an output port then ends at the port), `stat`, and `ltp -noff` with
 # flip-flops, block RAMs and I/O buffers excluded, and prints one line:
 #   <module> [Param=value ...]: LUT=.. FF=.. RAMB18=.. RAMB36=.. DSP=.. LUTRAM=.. SRL=..
@@ -40,6 +41,8 @@ usage() {
 
 script_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$script_dir/.." && pwd)"
+# shellcheck source=scripts/synth_flow.sh
+. "$script_dir/synth_flow.sh"
 
 module=""
 params=()
@@ -130,7 +133,7 @@ done
     echo "chparam${chparam} ${module}"
   fi
   echo "hierarchy -check -top ${module}${libdirs}"
-  echo "synth_xilinx -flatten -noiopad -top ${module}"
+  scw_synth_flow "${module}"
   echo "tee -q -o stat.txt stat"
   if [[ $run_ltp -eq 1 ]]; then
     # Xilinx flip-flops are not "FF cell types" to ltp -noff (those are Yosys' internal
