@@ -15,5 +15,11 @@ target_link_libraries(scw_rtl_engine PUBLIC scw::host scw_rtl_pipeline_small)
 if(SCW_THESIS_RTL)
   target_link_libraries(scw_rtl_engine PUBLIC scw_rtl_pipeline_thesis)
   target_compile_definitions(scw_rtl_engine PUBLIC SCW_THESIS_RTL=1)
+else()
+  # Without the thesis build it drives only the small build's models (-O1 too: sim/CMakeLists.txt)
+  # for a few frames, in the tests and `scw sim --config small`: -O1 compiles its one unity file
+  # in two thirds of the time. The thesis build's chain runs long (docs/performance.md) and keeps
+  # -O3.
+  target_compile_options(scw_rtl_engine PRIVATE ${SCW_QUICK_OPT})
 endif()
 scw_warnings(scw_rtl_engine)
