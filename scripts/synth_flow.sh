@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # SPDX-License-Identifier: Apache-2.0
 # The Yosys synthesis flow scw times and replays, written once: sourced by scripts/rtl_synth.sh
 # (resources and timing) and scripts/replay.sh --simulator netlist (the same netlist, simulated).
