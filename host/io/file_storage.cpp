@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -40,10 +41,31 @@ bool parses_in_time(const std::string& path, double seconds) {
   return false;
 }
 
+/// "5" for 5 s, "0.5" for half a second.
+std::string seconds_text(double seconds) {
+  std::string text = std::to_string(seconds);
+  text.erase(text.find_last_not_of('0') + 1);
+  if (text.back() == '.') text.pop_back();
+  return text;
+}
+
 }  // namespace
+
+double reader_seconds() {
+  const char* text = std::getenv("SCW_READER_SECONDS");
+  if (text == nullptr) return 5.0;
+  char* end = nullptr;
+  const double seconds = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(seconds > 0.0) || seconds > 3600.0)
+    throw std::runtime_error(std::string("SCW_READER_SECONDS='") + text +
+                             "' is not a number of seconds in (0, 3600]: set it to e.g. 5, or "
+                             "unset it");
+  return seconds;
+}
 
 cv::FileStorage open_file_storage(const std::string& path, const std::string& what,
                                   double seconds) {
+  if (seconds <= 0.0) seconds = reader_seconds();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(what + ": cannot open it");
   const std::string text((std::istreambuf_iterator<char>(in)), {});
@@ -52,7 +74,7 @@ cv::FileStorage open_file_storage(const std::string& path, const std::string& wh
                              " is NUL, which no text file holds: not a YAML, XML or JSON file");
   if (!parses_in_time(path, seconds))
     throw std::runtime_error(what + ": OpenCV's reader did not finish it within " +
-                             std::to_string(static_cast<int>(seconds)) +
+                             seconds_text(seconds) +
                              " s: the file is malformed (YAML, XML or JSON as cv::FileStorage "
                              "writes it)");
   cv::FileStorage fs;

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -341,6 +342,20 @@ TEST_CASE("broken calibration files give messages naming the file and the node",
     }
     CHECK_THAT(load_error(path), Catch::Contains("'image_width'"));
     CHECK(load_stereo_calibration(path, {640, 480}).image_size == cv::Size(640, 480));
+  }
+  SECTION("a file OpenCV's reader loops on, within the time SCW_READER_SECONDS gives") {
+    // The minimised input fuzzing found (fuzz/regressions/calibration/opencv_yaml_loop.yml).
+    const std::string path = (scratch() / "loops.yml").string();
+    std::ofstream(path) << "%YAML:1.\n   -u\n:\n";
+    struct Unset {
+      ~Unset() { unsetenv("SCW_READER_SECONDS"); }
+    } unset;
+    setenv("SCW_READER_SECONDS", "0.5", 1);
+    const std::string msg = load_error(path);
+    CHECK_THAT(msg, Catch::Contains("loops.yml"));
+    CHECK_THAT(msg, Catch::Contains("did not finish it within 0.5 s"));
+    setenv("SCW_READER_SECONDS", "soon", 1);
+    CHECK_THAT(load_error(path), Catch::Contains("SCW_READER_SECONDS='soon' is not a number"));
   }
 }
 
