@@ -93,7 +93,10 @@ inline std::vector<Object> random_table(std::mt19937& rng, const host::warning::
   std::uniform_real_distribution<double> lateral(-6.0, 6.0), depth(2.0, 40.0), size(0.1, 2.5);
   std::vector<Object> t;
   for (int i = 0; i < n; ++i) {
-    Object o = place_box(s, lateral(rng), depth(rng), size(rng), size(rng));
+    // Drawn one by one, last argument first, as the committed sets were made: a call's arguments
+    // are evaluated in an unspecified order (g++ went right to left, clang left to right).
+    const double h = size(rng), w = size(rng), z = depth(rng), x = lateral(rng);
+    Object o = place_box(s, x, z, w, h);
     bool copy = false;
     switch (kind(rng)) {
       case 0: o.d_max = static_cast<std::uint16_t>(rng() % 16); break;  // not measurable

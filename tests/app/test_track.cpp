@@ -333,7 +333,9 @@ TEST_CASE("the Kalman velocity converges to the true one on a noisy track", "[ap
   std::normal_distribution<double> noise(0.0, sigma);
   std::vector<Vector3d> measured;
   for (int f = 0; f < 300; ++f) {
-    measured.push_back(p0 + f * 0.01 * v + Vector3d(noise(rng), noise(rng), noise(rng)));
+    // One draw a statement: a call's arguments are evaluated in an unspecified order.
+    const double nz = noise(rng), ny = noise(rng), nx = noise(rng);
+    measured.push_back(p0 + f * 0.01 * v + Vector3d(nx, ny, nz));
   }
 
   TrackerParams kp;
