@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -41,14 +42,6 @@ bool parses_in_time(const std::string& path, double seconds) {
   return false;
 }
 
-/// "5" for 5 s, "0.5" for half a second.
-std::string seconds_text(double seconds) {
-  std::string text = std::to_string(seconds);
-  text.erase(text.find_last_not_of('0') + 1);
-  if (text.back() == '.') text.pop_back();
-  return text;
-}
-
 }  // namespace
 
 double reader_seconds() {
@@ -65,18 +58,18 @@ double reader_seconds() {
 
 cv::FileStorage open_file_storage(const std::string& path, const std::string& what,
                                   double seconds) {
-  if (seconds <= 0.0) seconds = reader_seconds();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(what + ": cannot open it");
   const std::string text((std::istreambuf_iterator<char>(in)), {});
   if (const auto nul = text.find('\0'); nul != std::string::npos)
     throw std::runtime_error(what + ": byte " + std::to_string(nul) +
                              " is NUL, which no text file holds: not a YAML, XML or JSON file");
-  if (!parses_in_time(path, seconds))
-    throw std::runtime_error(what + ": OpenCV's reader did not finish it within " +
-                             seconds_text(seconds) +
-                             " s: the file is malformed (YAML, XML or JSON as cv::FileStorage "
-                             "writes it)");
+  if (!parses_in_time(path, seconds)) {
+    std::ostringstream message;  // 5 s as "5", half a second as "0.5"
+    message << what << ": OpenCV's reader did not finish it within " << seconds
+            << " s: the file is malformed (YAML, XML or JSON as cv::FileStorage writes it)";
+    throw std::runtime_error(message.str());
+  }
   cv::FileStorage fs;
   fs.open(path, cv::FileStorage::READ);
   return fs;
