@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
-#include <cstdlib>
 #include <filesystem>
 
 #include "host/reference/line_buffer_ref.hpp"
@@ -14,6 +13,7 @@
 #include "sim/rtl/rtl_params.hpp"
 #include "sim/rtl/rtl_stream.hpp"
 #include "tests/common/primitive_configs.hpp"
+#include "tests/common/scoped_env.hpp"
 #include "tests/common/twin_check.hpp"
 #include "Vfifo_d1.h"
 #include "Vfifo_d1_scw_fifo.h"
@@ -201,13 +201,12 @@ TEST_CASE("SCW_FST_DIR switches FST tracing on", "[rtl][harness]") {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("scw_fst_" + std::to_string(static_cast<long>(::getpid())));
   std::filesystem::remove_all(dir);
-  ::setenv("SCW_FST_DIR", dir.c_str(), 1);
   {
+    scw::test::ScopedEnv fst("SCW_FST_DIR", dir.string());
     sim::Harness<Vstream_reg> h("traced_reg");
     h.reset();
     for (int i = 0; i < 10; ++i) h.tick();
   }
-  ::unsetenv("SCW_FST_DIR");
   {
     sim::Harness<Vstream_reg> h("untraced_reg");
     h.tick();

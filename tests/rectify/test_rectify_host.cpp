@@ -4,7 +4,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -18,6 +17,7 @@
 #include "host/rectify/calibration.hpp"
 #include "host/rectify/fixed_map.hpp"
 #include "host/rectify/run_model.hpp"
+#include "tests/common/scoped_env.hpp"
 
 namespace {
 using namespace scw::rectify;
@@ -347,14 +347,11 @@ TEST_CASE("broken calibration files give messages naming the file and the node",
     // The minimised input fuzzing found (fuzz/regressions/calibration/opencv_yaml_loop.yml).
     const std::string path = (scratch() / "loops.yml").string();
     std::ofstream(path) << "%YAML:1.\n   -u\n:\n";
-    struct Unset {
-      ~Unset() { unsetenv("SCW_READER_SECONDS"); }
-    } unset;
-    setenv("SCW_READER_SECONDS", "0.5", 1);
+    scw::test::ScopedEnv limit("SCW_READER_SECONDS", "0.5");
     const std::string msg = load_error(path);
     CHECK_THAT(msg, Catch::Contains("loops.yml"));
     CHECK_THAT(msg, Catch::Contains("did not finish it within 0.5 s"));
-    setenv("SCW_READER_SECONDS", "soon", 1);
+    limit.set("soon");
     CHECK_THAT(load_error(path), Catch::Contains("SCW_READER_SECONDS='soon' is not a number"));
   }
 }

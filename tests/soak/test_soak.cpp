@@ -4,14 +4,13 @@
 // and the checkers themselves (a divergence is found where it is, faults give the results they
 // should).
 #include <catch2/catch.hpp>
-
-#include <cstdlib>
 #include <string>
 
 #include "host/io/image_file.hpp"
 #include "host/soak/reset_trials.hpp"
 #include "host/soak/soak.hpp"
 #include "sim/rtl/verilated_harness.hpp"
+#include "tests/common/scoped_env.hpp"
 
 namespace {
 
@@ -125,12 +124,11 @@ TEST_CASE("each fault breaks its camera's frame and says which results must be f
 }
 
 TEST_CASE("a trace window that is not FROM:TO is refused with the fix", "[soak][sim]") {
-  ::setenv("SCW_FST_WINDOW", "20:10", 1);
+  scw::test::ScopedEnv window("SCW_FST_WINDOW", "20:10");
   CHECK_THROWS_WITH(scw::sim::TraceWindow::from_env(), Catch::Contains("give FROM:TO"));
-  ::setenv("SCW_FST_WINDOW", "10:20", 1);
+  window.set("10:20");
   const auto w = scw::sim::TraceWindow::from_env();
   CHECK(w.holds(10));
   CHECK(w.holds(20));
   CHECK_FALSE(w.holds(21));
-  ::unsetenv("SCW_FST_WINDOW");
 }
