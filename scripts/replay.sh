@@ -126,11 +126,8 @@ case "$stage" in
     dut_params=(MaxDisparityPx=max_disparity_px)
     tb_params=(WordsIn=words_in WordsOut=words_out
                "InW=$(($(file_field in.hex width_bits) - 1))"
-               "OutW=$(($(file_field expected.hex width_bits) - 1))")
-    for k in baseline_q8 focal_q4 cu_q4 cv_q4 veh_x_mm veh_y_mm veh_z_mm tunnel_half_w_mm \
-      tunnel_h_mm high_mm medium_mm near_mm min_height_mm d_limit_q4 rule spread_q4; do
-      plusargs+=("$k=$k")
-    done ;;
+               "OutW=$(($(file_field expected.hex width_bits) - 1))"
+               "CfgW=$(file_field cfg.hex width_bits)") ;;
   pipeline)
     # The whole top; its testbench probes the stages' output ports by hierarchical name, so
     # Yosys keeps the hierarchy.
@@ -143,6 +140,7 @@ case "$stage" in
                 MaxTilesY=MaxTilesY LabelsPerTile=LabelsPerTile MaxObjects=MaxObjects
                 MaxDisparityPx=MaxDisparityPx)
     tb_params=(Width=width Height=height CfgWords=cfg_words
+               "WarningCfgW=$(file_field cfg_warning.hex width_bits)"
                "KnotBits=$(file_field knots.hex width_bits)" "Knots=$(file_field knots.hex beats)"
                "RawBeats=$(file_field left.hex beats)" "DispBeats=$(file_field disparity.hex beats)"
                "ObjBits=$(file_field objects.hex width_bits)"

@@ -18,6 +18,7 @@
 #include "sim/pipeline/pipeline_chain.hpp"
 #include "sim/pipeline/pipeline_top.hpp"
 #include "sim/words/pack.hpp"
+#include "sim/words/warning_cfg.hpp"
 
 namespace scw::vectors {
 namespace {
@@ -25,20 +26,17 @@ namespace {
 using json = nlohmann::json;
 using sim::Bits;
 
-// scw_pipeline's cfg_* ports in port order: cfg.hex holds one 32-bit word for each, and
-// tests/pipeline/tb/tb_pipeline_replay.sv connects them in this order. The values come from
-// sim::drive_pipeline_cfg, the function that configures the Verilated top.
+// scw_pipeline's cfg_* ports of at most 32 bits in port order: cfg.hex holds one 32-bit word for
+// each, and tests/pipeline/tb/tb_pipeline_replay.sv connects them in this order; the warning
+// stage's word (cfg_warning_i) is cfg_warning.hex. The values come from sim::drive_pipeline_cfg,
+// the function that configures the Verilated top.
 // clang-format off
 #define SCW_PIPELINE_CFG_PORTS(X)                                                               \
   X(cfg_width_i) X(cfg_height_i) X(cfg_lead_i) X(cfg_dmin_i) X(cfg_num_disp_i)                \
   X(cfg_prefilter_i) X(cfg_cap_i) X(cfg_sad_limit_i) X(cfg_texture_i) X(cfg_uniqueness_i)     \
   X(cfg_subpixel_i) X(cfg_opencv_invalid_i) X(cfg_edge_i) X(cfg_tile_w_i) X(cfg_tile_h_i)     \
-  X(cfg_floor_i) X(cfg_min_area_i) X(cfg_baseline_q8_i) X(cfg_focal_q4_i) X(cfg_cu_q4_i)      \
-  X(cfg_cv_q4_i) X(cfg_veh_x_mm_i) X(cfg_veh_y_mm_i) X(cfg_veh_z_mm_i)                         \
-  X(cfg_tunnel_half_w_mm_i) X(cfg_tunnel_h_mm_i) X(cfg_high_mm_i) X(cfg_medium_mm_i)           \
-  X(cfg_near_mm_i) X(cfg_min_height_mm_i) X(cfg_d_limit_q4_i) X(cfg_rule_i) X(cfg_spread_i)   \
-  X(cfg_road_enable_i) X(cfg_road_a0_i) X(cfg_road_b0_i) X(cfg_road_a_min_i)                   \
-  X(cfg_road_a_max_i) X(cfg_road_h_min_i) X(cfg_road_h_max_i) X(cfg_road_tol_i)                \
+  X(cfg_floor_i) X(cfg_min_area_i) X(cfg_road_enable_i) X(cfg_road_a0_i) X(cfg_road_b0_i)      \
+  X(cfg_road_a_min_i) X(cfg_road_a_max_i) X(cfg_road_h_min_i) X(cfg_road_h_max_i) X(cfg_road_tol_i)                \
   X(cfg_road_tol_rel_i) X(cfg_road_gate_i) X(cfg_road_gate_rel_i) X(cfg_road_min_count_i)
 // clang-format on
 
@@ -54,24 +52,39 @@ struct CfgValue {
   }
 };
 
+/// A port wider than 64 bits as Verilator declares it (VlWide's storage), what Bits::to_port
+/// writes.
+template <int N>
+struct WidePort {
+  std::uint32_t m_storage[(N + 31) / 32] = {};
+};
+
 /// Stands in for the Verilated top: a member per cfg_* port.
 struct CfgPorts {
 #define SCW_MEMBER(port) CfgValue port;
   SCW_PIPELINE_CFG_PORTS(SCW_MEMBER)
 #undef SCW_MEMBER
+  WidePort<sim::warning_cfg::kBits> cfg_warning_i;
+};
+
+/// What drive_pipeline_cfg drives: the narrow ports' words in port order, and the warning word.
+struct CfgDrive {
+  std::vector<std::pair<std::string, std::uint32_t>> ports;
+  Bits warning;
 };
 
 template <typename Build>
-std::vector<std::pair<std::string, std::uint32_t>> cfg_words(const sim::PipelineSetup& s) {
+CfgDrive cfg_drive(const sim::PipelineSetup& s) {
   CfgPorts p;
   sim::drive_pipeline_cfg<CfgPorts, Build>(p, s);
-  std::vector<std::pair<std::string, std::uint32_t>> v;
+  CfgDrive d;
 #define SCW_ENTRY(port)                                                                  \
   if (!p.port.driven) throw std::logic_error("pipeline set: " #port " is never driven"); \
-  v.emplace_back(#port, p.port.value);
+  d.ports.emplace_back(#port, p.port.value);
   SCW_PIPELINE_CFG_PORTS(SCW_ENTRY)
 #undef SCW_ENTRY
-  return v;
+  d.warning = Bits::from_port(p.cfg_warning_i, sim::warning_cfg::kBits);
+  return d;
 }
 
 /// Synthetic street frames: a car-sized box at the middle of the range to the left, and a
@@ -220,9 +233,9 @@ PipelineSetSummary write_build(const PipelineSetOptions& o, const std::filesyste
 
   json params = json::object();
   for (const auto& [name, value] : host::synth::top_params<Build>()) params[name] = value;
-  const auto cfg = cfg_words<Build>(setup);
+  const auto cfg = cfg_drive<Build>(setup);
   json config = {{"config", o.config}, {"ppc", P},           {"width", w},
-                 {"height", h},        {"frames", o.frames}, {"cfg_words", cfg.size()},
+                 {"height", h},        {"frames", o.frames}, {"cfg_words", cfg.ports.size()},
                  {"params", params}};
   VectorWriter out(
       dir, "pipeline", config,
@@ -235,13 +248,17 @@ PipelineSetSummary write_build(const PipelineSetOptions& o, const std::filesyste
           "; every stream between the stages");
   std::vector<Bits> cfg_bits;
   json lines = json::array();
-  for (const auto& [port, value] : cfg) {
+  for (const auto& [port, value] : cfg.ports) {
     Bits b(32);
     b.set(0, 32, value);
     cfg_bits.push_back(b);
     lines.push_back({{"name", port}, {"value", value}});
   }
   out.add_hex("cfg.hex", "input", cfg_bits, {{"lines", lines}});
+  using sim::warning_cfg::kConfigFields;
+  out.add_hex("cfg_warning.hex", "input", {cfg.warning},
+              {{"fields", field_layout(kConfigFields)},
+               {"values", field_values(kConfigFields, sim::warning_cfg::unpack(cfg.warning))}});
   using G = typename Build::map_grid;
   out.add_hex(
       "knots.hex", "input", knot_words<G>(setup),

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -79,6 +80,21 @@ nlohmann::json field_layout(const Table& table, int lsb = 0,
     lsb += f.bits;
   });
   return entries;
+}
+
+/// A word's values as `{name: value}` (an enum as its code), beside its
+/// field_layout() for a human reading the manifest.
+template <typename Table, typename S>
+nlohmann::json field_values(const Table& table, const S& s) {
+  nlohmann::json v = nlohmann::json::object();
+  sim::words::for_each(table, [&](const auto& f) {
+    using F = std::remove_cv_t<std::remove_reference_t<decltype(f)>>;
+    if constexpr (std::is_enum_v<typename F::value_type>)
+      v[f.name] = static_cast<long long>(s.*f.member);
+    else
+      v[f.name] = s.*f.member;
+  });
+  return v;
 }
 
 /// The exact text finish() writes: 2-space indent, fixed key order, trailing newline.

@@ -20,6 +20,7 @@
 #include "sim/models/warning_model.hpp"
 #include "sim/words/labelling_pack.hpp"
 #include "sim/words/pack.hpp"
+#include "sim/words/warning_cfg.hpp"
 #include "sim/words/warning_pack.hpp"
 // The object placement and random tables the [hls] and [rtl] tests use: the vectors exercise
 // the same branches, and a plain fold of evaluate() checks every frame independently of the
@@ -380,26 +381,6 @@ nlohmann::json setup_json(const WarningSetup& s) {
           {"spread_k", s.spread_k}};
 }
 
-/// The stage's cfg_*_i ports, named after them without cfg_ and _i.
-nlohmann::json ports_json(const WarningConfig& cfg) {
-  return {{"baseline_q8", cfg.baseline_q8},
-          {"focal_q4", cfg.focal_q4},
-          {"cu_q4", cfg.cu_q4},
-          {"cv_q4", cfg.cv_q4},
-          {"veh_x_mm", cfg.veh_x_mm},
-          {"veh_y_mm", cfg.veh_y_mm},
-          {"veh_z_mm", cfg.veh_z_mm},
-          {"tunnel_half_w_mm", cfg.tunnel_half_w_mm},
-          {"tunnel_h_mm", cfg.tunnel_h_mm},
-          {"high_mm", cfg.high_mm},
-          {"medium_mm", cfg.medium_mm},
-          {"near_mm", cfg.near_mm},
-          {"min_height_mm", cfg.min_height_mm},
-          {"d_limit_q4", cfg.d_limit_q4},
-          {"rule", static_cast<int>(cfg.rule)},
-          {"spread_q4", cfg.spread_q4}};
-}
-
 using Rows = std::vector<std::vector<std::string>>;
 
 /// One in_words.csv row: the fields the stage reads of a word (0 for the other shape's).
@@ -465,12 +446,15 @@ std::vector<std::string> result_row(std::size_t frame, std::size_t closing, cons
 }
 
 void write_files(const std::filesystem::path& dir, const WarningPreset& p,
-                 const nlohmann::json& config, const std::vector<LabelPacket>& in,
-                 const std::vector<ResultPacket>& out, const Rows& word_rows, const Rows& eval_rows,
-                 const Rows& result_rows) {
+                 const nlohmann::json& config, const WarningConfig& cfg,
+                 const std::vector<LabelPacket>& in, const std::vector<ResultPacket>& out,
+                 const Rows& word_rows, const Rows& eval_rows, const Rows& result_rows) {
   const auto in_bits = sim::pack_all(in);
   const auto out_bits = sim::pack_all(out);
   VectorWriter vw(dir, "warning", config, p.description);
+  // The configuration word the testbench puts on cfg_warning_i (its values in config.cfg).
+  vw.add_hex("cfg.hex", "input", {sim::warning_cfg::pack(cfg)},
+             {{"fields", field_layout(sim::warning_cfg::kConfigFields)}});
   vw.add_hex("in.hex", "input", in_bits, labelling_word_layout());
   vw.add_csv("in_words.csv", "input",
              {"frame", "word", "last", "is_status", "x_min", "x_max", "y_min", "y_max", "d_max",
@@ -547,7 +531,7 @@ WarningSetSummary write_set(const WarningPreset& p, const std::filesystem::path&
                                  {"max_disparity_px", Params::kMaxDisparityPx},
                                  {"table_size", Params::kTableSize},
                                  {"latency", hls::warning::kLatency},
-                                 {"cfg", ports_json(cfg)},
+                                 {"cfg", field_values(sim::warning_cfg::kConfigFields, cfg)},
                                  {"setup", setup_json(p.setup)},
                                  {"image_width", p.width},
                                  {"image_height", p.height},
@@ -568,7 +552,7 @@ WarningSetSummary write_set(const WarningPreset& p, const std::filesystem::path&
     }
     result_rows.push_back(result_row(fi, closing[fi], out[fi].data));
   }
-  write_files(dir, p, config, in, out, word_rows, eval_rows, result_rows);
+  write_files(dir, p, config, cfg, in, out, word_rows, eval_rows, result_rows);
   sum.frames = p.frames.size();
   sum.words_in = in.size();
   sum.results = out.size();

@@ -99,4 +99,36 @@ package scw_pkg;
     logic                  in_tunnel;
     logic [SeverityBits-1:0] severity;
   } warning_result_t;
+  // The warning stage's configuration (hls::warning::WarningConfig but road_height, a port of
+  // its own), one word on the cfg_warning_i port of scw_warning and of the top: the layout here
+  // and in sim/words/warning_cfg.hpp's kConfigFields, which packs a WarningConfig into it (the
+  // C++ drive, and the vector sets' cfg word). Lengths in mm and Q12.4 pixel values are 16 bits,
+  // the baseline Q12.8 mm 20, the spread rule's k Q4.4 8; the vehicle offsets are two's
+  // complement.
+  localparam int unsigned CfgBaselineBits /*verilator public*/ = 20;
+  localparam int unsigned CfgFieldBits    /*verilator public*/ = 16;
+  localparam int unsigned CfgSpreadBits   /*verilator public*/ = 8;
+  // warning_cfg_t's width (Yosys 0.23 cannot take $bits of a type here; scw_warning checks the
+  // two agree at elaboration).
+  localparam int unsigned WarningCfgBits  /*verilator public*/ =
+      CfgBaselineBits + 13 * CfgFieldBits + 1 + CfgSpreadBits;
+  // Most significant first: baseline_q8 the lowest bits, spread_q4 the highest.
+  typedef struct packed {
+    logic [CfgSpreadBits-1:0]   spread_q4;
+    logic                       rule;  // hls::warning::DistanceRule: 0 closest, 1 spread
+    logic [CfgFieldBits-1:0]    d_limit_q4;
+    logic [CfgFieldBits-1:0]    min_height_mm;
+    logic [CfgFieldBits-1:0]    near_mm;
+    logic [CfgFieldBits-1:0]    medium_mm;
+    logic [CfgFieldBits-1:0]    high_mm;
+    logic [CfgFieldBits-1:0]    tunnel_h_mm;
+    logic [CfgFieldBits-1:0]    tunnel_half_w_mm;
+    logic [CfgFieldBits-1:0]    veh_z_mm;
+    logic [CfgFieldBits-1:0]    veh_y_mm;
+    logic [CfgFieldBits-1:0]    veh_x_mm;
+    logic [CfgFieldBits-1:0]    cv_q4;
+    logic [CfgFieldBits-1:0]    cu_q4;
+    logic [CfgFieldBits-1:0]    focal_q4;
+    logic [CfgBaselineBits-1:0] baseline_q8;
+  } warning_cfg_t;
 endpackage

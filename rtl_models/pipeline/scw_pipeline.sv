@@ -75,23 +75,8 @@ module scw_pipeline #(
   input  logic [15:0]        cfg_tile_h_i,
   input  logic [15:0]        cfg_floor_i,
   input  logic [31:0]        cfg_min_area_i,
-  // warning (hls::warning::WarningConfig)
-  input  logic [19:0]        cfg_baseline_q8_i,
-  input  logic [15:0]        cfg_focal_q4_i,
-  input  logic [15:0]        cfg_cu_q4_i,
-  input  logic [15:0]        cfg_cv_q4_i,
-  input  logic signed [15:0] cfg_veh_x_mm_i,
-  input  logic signed [15:0] cfg_veh_y_mm_i,
-  input  logic signed [15:0] cfg_veh_z_mm_i,
-  input  logic [15:0]        cfg_tunnel_half_w_mm_i,
-  input  logic [15:0]        cfg_tunnel_h_mm_i,
-  input  logic [15:0]        cfg_high_mm_i,
-  input  logic [15:0]        cfg_medium_mm_i,
-  input  logic [15:0]        cfg_near_mm_i,
-  input  logic [15:0]        cfg_min_height_mm_i,
-  input  logic [15:0]        cfg_d_limit_q4_i,
-  input  logic               cfg_rule_i,
-  input  logic [7:0]         cfg_spread_i,
+  // warning (hls::warning::WarningConfig): scw_pkg::warning_cfg_t
+  input  logic [scw_pkg::WarningCfgBits-1:0] cfg_warning_i,
   // road (hls::road::RoadConfig)
   input  logic               cfg_road_enable_i,
   input  logic [17:0]        cfg_road_a0_i,
@@ -295,10 +280,7 @@ module scw_pipeline #(
 
   scw_warning #(.MaxDisparityPx(MaxDisparityPx)) u_warning (
     .clk_i, .rst_ni,
-    .cfg_baseline_q8_i, .cfg_focal_q4_i, .cfg_cu_q4_i, .cfg_cv_q4_i, .cfg_veh_x_mm_i,
-    .cfg_veh_y_mm_i, .cfg_veh_z_mm_i, .cfg_tunnel_half_w_mm_i, .cfg_tunnel_h_mm_i,
-    .cfg_high_mm_i, .cfg_medium_mm_i, .cfg_near_mm_i, .cfg_min_height_mm_i,
-    .cfg_d_limit_q4_i, .cfg_rule_i, .cfg_spread_i, .cfg_road_height_i(1'b1),
+    .cfg_warning_i, .cfg_road_height_i(1'b1),
     .in_valid_i(wi_valid), .in_ready_o(wi_ready), .in_data_i(wi_word[ObjW-1:0]),
     .in_last_i(wi_word[ObjW]),
     .road_valid_i(lq_valid), .road_ready_o(lq_ready), .road_a_i(lq_word[17:0]),

@@ -39,22 +39,8 @@ module scw_warning #(
   input  logic               clk_i,
   input  logic               rst_ni,
   // static configuration (hls::warning::WarningConfig)
-  input  logic [19:0]        cfg_baseline_q8_i,
-  input  logic [15:0]        cfg_focal_q4_i,
-  input  logic [15:0]        cfg_cu_q4_i,
-  input  logic [15:0]        cfg_cv_q4_i,
-  input  logic signed [15:0] cfg_veh_x_mm_i,
-  input  logic signed [15:0] cfg_veh_y_mm_i,
-  input  logic signed [15:0] cfg_veh_z_mm_i,
-  input  logic [15:0]        cfg_tunnel_half_w_mm_i,
-  input  logic [15:0]        cfg_tunnel_h_mm_i,
-  input  logic [15:0]        cfg_high_mm_i,
-  input  logic [15:0]        cfg_medium_mm_i,
-  input  logic [15:0]        cfg_near_mm_i,
-  input  logic [15:0]        cfg_min_height_mm_i,
-  input  logic [15:0]        cfg_d_limit_q4_i,
-  input  logic               cfg_rule_i,    // hls::warning::DistanceRule: 0 closest, 1 spread
-  input  logic [7:0]         cfg_spread_i,  // spread_q4: k of the spread rule, Q4.4
+  // static configuration (hls::warning::WarningConfig): scw_pkg::warning_cfg_t
+  input  logic [scw_pkg::WarningCfgBits-1:0] cfg_warning_i,
   input  logic               cfg_road_height_i,  // heights above the road line of each frame
   // the labelling stage's objects, then its status word with last
   input  logic               in_valid_i,
@@ -140,16 +126,25 @@ module scw_warning #(
   assign fields = in_status
       ? FW'({st.stream_error, st.object_overflow, st.tile_overflow, st.objects}) : box;
 
+  // The word's other fields are scw_warning_object's.
+  /* verilator lint_off UNUSEDSIGNAL */
+  scw_pkg::warning_cfg_t cfg;
+  /* verilator lint_on UNUSEDSIGNAL */
+  assign cfg = cfg_warning_i;
+  if ($bits(cfg) != scw_pkg::WarningCfgBits) begin : gen_bad_cfg
+    $error("scw_warning: scw_pkg::WarningCfgBits is not warning_cfg_t's width");
+  end
+
   logic [15:0] d_limit_q;
-  always_ff @(posedge clk_i) d_limit_q <= cfg_d_limit_q4_i;
+  always_ff @(posedge clk_i) d_limit_q <= cfg.d_limit_q4;
 
   // ---- R1 .. R(RuleLatency): the distance rule ----------------------------------------------
   logic [15:0] r_dq;
   scw_warning_rule #(.Latency(RuleLatency)) u_rule (
     .clk_i,
     .en_i        (en_p),
-    .cfg_rule_i,
-    .cfg_spread_i,
+    .cfg_rule_i  (cfg.rule),
+    .cfg_spread_i(cfg.spread_q4),
     .area_i      (20'(desc.area)),
     .sum_d_i     (desc.sum_d[34:0]),
     .sum_dd_i    (desc.sum_dd[49:0]),
@@ -210,19 +205,7 @@ module scw_warning #(
   scw_warning_object #(.OutStages(ObjStages - 1)) u_object (
     .clk_i,
     .en_i                  (en_p),
-    .cfg_baseline_q8_i,
-    .cfg_focal_q4_i,
-    .cfg_cu_q4_i,
-    .cfg_cv_q4_i,
-    .cfg_veh_x_mm_i,
-    .cfg_veh_y_mm_i,
-    .cfg_veh_z_mm_i,
-    .cfg_tunnel_half_w_mm_i,
-    .cfg_tunnel_h_mm_i,
-    .cfg_high_mm_i,
-    .cfg_medium_mm_i,
-    .cfg_near_mm_i,
-    .cfg_min_height_mm_i,
+    .cfg_warning_i,
     .recip_i               (s1_recip),
     .closest_x_i           (s0_fields_q[0 +: 16]),
     .closest_y_i           (s0_fields_q[16 +: 16]),

@@ -35,20 +35,8 @@ module scw_warning_object #(
 ) (
   input  logic               clk_i,
   input  logic               en_i,
-  // configuration (hls::warning::WarningConfig)
-  input  logic [19:0]        cfg_baseline_q8_i,
-  input  logic [15:0]        cfg_focal_q4_i,
-  input  logic [15:0]        cfg_cu_q4_i,
-  input  logic [15:0]        cfg_cv_q4_i,
-  input  logic signed [15:0] cfg_veh_x_mm_i,
-  input  logic signed [15:0] cfg_veh_y_mm_i,
-  input  logic signed [15:0] cfg_veh_z_mm_i,
-  input  logic [15:0]        cfg_tunnel_half_w_mm_i,
-  input  logic [15:0]        cfg_tunnel_h_mm_i,
-  input  logic [15:0]        cfg_high_mm_i,
-  input  logic [15:0]        cfg_medium_mm_i,
-  input  logic [15:0]        cfg_near_mm_i,
-  input  logic [15:0]        cfg_min_height_mm_i,
+  // configuration (hls::warning::WarningConfig): scw_pkg::warning_cfg_t
+  input  logic [scw_pkg::WarningCfgBits-1:0] cfg_warning_i,
   // stage 1
   input  logic [28:0]        recip_i,
   // stage 0
@@ -95,9 +83,14 @@ module scw_warning_object #(
   // ---- configuration ------------------------------------------------------------------------
   // Each offset as (+-16 * pixel) + k: k = -cu, -cu - 8, -cu + 8 across, cv, cv + 8, cv - 8 up
   // (the box edges are half a pixel outside its pixels).
+  // The word's rule fields and d_limit are scw_warning's.
+  /* verilator lint_off UNUSEDSIGNAL */
+  scw_pkg::warning_cfg_t cfg;
+  /* verilator lint_on UNUSEDSIGNAL */
+  assign cfg = cfg_warning_i;
   logic signed [17:0] cu_s, cv_s;
-  assign cu_s = {2'b0, cfg_cu_q4_i};
-  assign cv_s = {2'b0, cfg_cv_q4_i};
+  assign cu_s = {2'b0, cfg.cu_q4};
+  assign cv_s = {2'b0, cfg.cv_q4};
 
   logic signed [20:0] base_q, focal_q;
   logic signed [17:0] k_x_q, k_x0_q, k_x1_q, k_y_q, k_yt_q, k_yb_q;
@@ -106,25 +99,25 @@ module scw_warning_object #(
   logic [15:0] hw_q, th_q, high_q, med_q, near_q, minh_q;
   logic med_nz_q;
   always_ff @(posedge clk_i) begin
-    base_q   <= {1'b0, cfg_baseline_q8_i};
-    focal_q  <= {5'b0, cfg_focal_q4_i};
+    base_q   <= {1'b0, cfg.baseline_q8};
+    focal_q  <= {5'b0, cfg.focal_q4};
     k_x_q    <= -cu_s;
     k_x0_q   <= -cu_s - 18'sd8;
     k_x1_q   <= -cu_s + 18'sd8;
     k_y_q    <= cv_s;
     k_yt_q   <= cv_s + 18'sd8;
     k_yb_q   <= cv_s - 18'sd8;
-    nhw_q    <= -$signed({1'b0, cfg_tunnel_half_w_mm_i});
-    vx_q     <= cfg_veh_x_mm_i;
-    vy_q     <= cfg_veh_y_mm_i;
-    vz_q     <= cfg_veh_z_mm_i;
-    hw_q     <= cfg_tunnel_half_w_mm_i;
-    th_q     <= cfg_tunnel_h_mm_i;
-    high_q   <= cfg_high_mm_i;
-    med_q    <= cfg_medium_mm_i;
-    near_q   <= cfg_near_mm_i;
-    minh_q   <= cfg_min_height_mm_i;
-    med_nz_q <= cfg_medium_mm_i != '0;
+    nhw_q    <= -$signed({1'b0, cfg.tunnel_half_w_mm});
+    vx_q     <= $signed(cfg.veh_x_mm);
+    vy_q     <= $signed(cfg.veh_y_mm);
+    vz_q     <= $signed(cfg.veh_z_mm);
+    hw_q     <= cfg.tunnel_half_w_mm;
+    th_q     <= cfg.tunnel_h_mm;
+    high_q   <= cfg.high_mm;
+    med_q    <= cfg.medium_mm;
+    near_q   <= cfg.near_mm;
+    minh_q   <= cfg.min_height_mm;
+    med_nz_q <= cfg.medium_mm != '0;
   end
 
   // ---- 1 .. 5: the pixel offsets, and S = b / d ---------------------------------------------

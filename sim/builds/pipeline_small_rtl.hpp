@@ -68,6 +68,7 @@ static_assert(Vpipe_p1_top_scw_pkg::ObjWordBits ==
               BeatLayout<hls::labelling::LabelPacket>::kPayloadBits);
 static_assert(Vpipe_p1_top_scw_pkg::ResultWordBits ==
               BeatLayout<hls::warning::ResultPacket>::kPayloadBits);
+static_assert(Vpipe_p1_top_scw_pkg::WarningCfgBits == warning_cfg::kBits);
 static_assert(Vpipe_p1_top_scw_pkg::PipeResultBits ==
               BeatLayout<hls::pipeline::PipelineResultPacket>::kPayloadBits);
 static_assert(Vpipe_p1_top_scw_pkg::DispBits == 8 * sizeof(hls::road::disp_t));

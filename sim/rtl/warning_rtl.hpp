@@ -10,6 +10,7 @@
 #include "sim/rtl/rtl_join.hpp"
 #include "sim/rtl/rtl_stream.hpp"
 #include "sim/words/labelling_pack.hpp"
+#include "sim/words/warning_cfg.hpp"
 #include "sim/words/warning_pack.hpp"
 
 namespace scw::sim {
@@ -23,25 +24,11 @@ constexpr bool warning_params_match() {
          VM::RuleLatency == hls::warning::kRuleLatency && VM::Latency == hls::warning::kLatency;
 }
 
-/// Sets the cfg_* ports of the warning stage (scw_warning, or a top that passes them on).
+/// Sets the warning stage's configuration word, cfg_warning_i (of scw_warning, or a top that
+/// passes it on), packed by its one field table.
 template <typename VM>
 void drive_warning_cfg(VM& m, const hls::warning::WarningConfig& cfg) {
-  m.cfg_baseline_q8_i = cfg.baseline_q8;
-  m.cfg_focal_q4_i = cfg.focal_q4;
-  m.cfg_cu_q4_i = cfg.cu_q4;
-  m.cfg_cv_q4_i = cfg.cv_q4;
-  m.cfg_veh_x_mm_i = static_cast<std::uint16_t>(cfg.veh_x_mm);
-  m.cfg_veh_y_mm_i = static_cast<std::uint16_t>(cfg.veh_y_mm);
-  m.cfg_veh_z_mm_i = static_cast<std::uint16_t>(cfg.veh_z_mm);
-  m.cfg_tunnel_half_w_mm_i = cfg.tunnel_half_w_mm;
-  m.cfg_tunnel_h_mm_i = cfg.tunnel_h_mm;
-  m.cfg_high_mm_i = cfg.high_mm;
-  m.cfg_medium_mm_i = cfg.medium_mm;
-  m.cfg_near_mm_i = cfg.near_mm;
-  m.cfg_min_height_mm_i = cfg.min_height_mm;
-  m.cfg_d_limit_q4_i = cfg.d_limit_q4;
-  m.cfg_rule_i = static_cast<std::uint8_t>(cfg.rule);
-  m.cfg_spread_i = cfg.spread_q4;
+  warning_cfg::pack(cfg).to_port(m.cfg_warning_i);
 }
 
 /// The ports of scw_warning as a join: `a` the object words (in_*, with in_last_i), `b` the road

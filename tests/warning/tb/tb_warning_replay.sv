@@ -4,11 +4,10 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run with the set's manifest.json config.cfg as plusargs: +vectors=<set folder> +baseline_q8
-// +focal_q4 +cu_q4 +cv_q4 +veh_x_mm +veh_y_mm +veh_z_mm (signed, in decimal) +tunnel_half_w_mm
-// +tunnel_h_mm +high_mm +medium_mm +near_mm +min_height_mm +d_limit_q4 +rule +spread_q4.
+// Run with +vectors=<set folder>: the stage's configuration is the set's cfg.hex, one word for
+// cfg_warning_i (scw_pkg::warning_cfg_t; its fields in the manifest's layout).
 // Parameters: config.max_disparity_px (the build), words_in, words_out (= frames: one result a
-// frame).
+// frame), the words' widths.
 // +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
 // another).
 module tb_warning_replay #(
@@ -18,7 +17,8 @@ module tb_warning_replay #(
   // The words' widths: the manifest's in.hex and expected.hex width_bits less the last bit (the
   // labelling object word and the frame result at scw_pkg's widths).
   parameter int InW            = 897,
-  parameter int OutW           = 199
+  parameter int OutW           = 199,
+  parameter int CfgW           = 237   // cfg.hex's width_bits: scw_pkg::WarningCfgBits
 );
   // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
   // k is the ready of cycles k mod 7.
@@ -32,26 +32,12 @@ module tb_warning_replay #(
   logic [OutW:0] exp_mem [WordsOut];  // {last, data[OutW-1:0]}
   string dir;
   int stalls = 1;
-  int baseline_q8, focal_q4, cu_q4, cv_q4, veh_x_mm, veh_y_mm, veh_z_mm, tunnel_half_w_mm,
-      tunnel_h_mm, high_mm, medium_mm, near_mm, min_height_mm, d_limit_q4, rule, spread_q4;
-  // The cfg_* ports are static: they take their values at time 0, long before the first word.
+  logic [CfgW-1:0] cfg_mem [1];
+  // cfg_warning_i is static: it takes its value at time 0, long before the first word.
   initial begin
     if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
-    if (!$value$plusargs("baseline_q8=%d", baseline_q8) ||
-        !$value$plusargs("focal_q4=%d", focal_q4) || !$value$plusargs("cu_q4=%d", cu_q4) ||
-        !$value$plusargs("cv_q4=%d", cv_q4) || !$value$plusargs("veh_x_mm=%d", veh_x_mm) ||
-        !$value$plusargs("veh_y_mm=%d", veh_y_mm) || !$value$plusargs("veh_z_mm=%d", veh_z_mm) ||
-        !$value$plusargs("tunnel_half_w_mm=%d", tunnel_half_w_mm) ||
-        !$value$plusargs("tunnel_h_mm=%d", tunnel_h_mm) ||
-        !$value$plusargs("high_mm=%d", high_mm) || !$value$plusargs("medium_mm=%d", medium_mm) ||
-        !$value$plusargs("near_mm=%d", near_mm) ||
-        !$value$plusargs("min_height_mm=%d", min_height_mm) ||
-        !$value$plusargs("d_limit_q4=%d", d_limit_q4) || !$value$plusargs("rule=%d", rule) ||
-        !$value$plusargs("spread_q4=%d", spread_q4))
-      $fatal(1, "give the set's config.cfg: +baseline_q8 +focal_q4 +cu_q4 +cv_q4 +veh_x_mm ",
-             "+veh_y_mm +veh_z_mm +tunnel_half_w_mm +tunnel_h_mm +high_mm +medium_mm +near_mm ",
-             "+min_height_mm +d_limit_q4 +rule +spread_q4");
+    $readmemh({dir, "/cfg.hex"}, cfg_mem, 0, 0);
     $readmemh({dir, "/in.hex"}, in_mem, 0, WordsIn - 1);
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, WordsOut - 1);
   end
@@ -85,14 +71,7 @@ module tb_warning_replay #(
   logic road_ready;  // never asked for a line here
   scw_warning #(.MaxDisparityPx(MaxDisparityPx)) u_dut (
     .clk_i(clk), .rst_ni(rst_n),
-    .cfg_baseline_q8_i(20'(baseline_q8)), .cfg_focal_q4_i(16'(focal_q4)),
-    .cfg_cu_q4_i(16'(cu_q4)), .cfg_cv_q4_i(16'(cv_q4)),
-    .cfg_veh_x_mm_i(16'(veh_x_mm)), .cfg_veh_y_mm_i(16'(veh_y_mm)),
-    .cfg_veh_z_mm_i(16'(veh_z_mm)),
-    .cfg_tunnel_half_w_mm_i(16'(tunnel_half_w_mm)), .cfg_tunnel_h_mm_i(16'(tunnel_h_mm)),
-    .cfg_high_mm_i(16'(high_mm)), .cfg_medium_mm_i(16'(medium_mm)),
-    .cfg_near_mm_i(16'(near_mm)), .cfg_min_height_mm_i(16'(min_height_mm)),
-    .cfg_d_limit_q4_i(16'(d_limit_q4)), .cfg_rule_i(1'(rule)), .cfg_spread_i(8'(spread_q4)),
+    .cfg_warning_i(cfg_mem[0]),
     // the sets judge box heights: no road line comes with their frames
     .cfg_road_height_i(1'b0), .road_valid_i(1'b0), .road_ready_o(road_ready),
     .road_a_i(18'd0), .road_b_i(32'd0),
