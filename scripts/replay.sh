@@ -115,11 +115,9 @@ case "$stage" in
     tb=road/tb/tb_road_replay.sv top=scw_road
     rtl=("$(cd "$root/rtl_models" && echo common/*.sv road/*.sv)")
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height)
-    tb_params=(Beats=beats Frames=frames FitClocks=fit_clocks)
-    plusargs=(width=width height=height enable=enable nominal_a=nominal_a nominal_b=nominal_b
-              a_min=a_min a_max=a_max h_min=h_min h_max=h_max tol_q4=tol_q4
-              tol_rel_q8=tol_rel_q8 gate_q4=gate_q4 gate_rel_q8=gate_rel_q8
-              min_count=min_count) ;;
+    tb_params=(Beats=beats Frames=frames FitClocks=fit_clocks
+               "CfgW=$(file_field cfg.hex width_bits)")
+    plusargs=(width=width height=height) ;;
   warning)
     tb=warning/tb/tb_warning_replay.sv top=scw_warning
     rtl=(common/scw_delay_ring.sv "$(cd "$root/rtl_models" && echo warning/*.sv)")
@@ -141,6 +139,7 @@ case "$stage" in
                 MaxDisparityPx=MaxDisparityPx)
     tb_params=(Width=width Height=height CfgWords=cfg_words
                "WarningCfgW=$(file_field cfg_warning.hex width_bits)"
+               "RoadCfgW=$(file_field cfg_road.hex width_bits)"
                "KnotBits=$(file_field knots.hex width_bits)" "Knots=$(file_field knots.hex beats)"
                "RawBeats=$(file_field left.hex beats)" "DispBeats=$(file_field disparity.hex beats)"
                "ObjBits=$(file_field objects.hex width_bits)"

@@ -18,6 +18,7 @@
 #include "sim/pipeline/pipeline_chain.hpp"
 #include "sim/pipeline/pipeline_top.hpp"
 #include "sim/words/pack.hpp"
+#include "sim/words/road_cfg.hpp"
 #include "sim/words/warning_cfg.hpp"
 
 namespace scw::vectors {
@@ -28,16 +29,14 @@ using sim::Bits;
 
 // scw_pipeline's cfg_* ports of at most 32 bits in port order: cfg.hex holds one 32-bit word for
 // each, and tests/pipeline/tb/tb_pipeline_replay.sv connects them in this order; the warning
-// stage's word (cfg_warning_i) is cfg_warning.hex. The values come from sim::drive_pipeline_cfg,
-// the function that configures the Verilated top.
+// and road stages' words (cfg_warning_i, cfg_road_i) are cfg_warning.hex and cfg_road.hex. The
+// values come from sim::drive_pipeline_cfg, the function that configures the Verilated top.
 // clang-format off
 #define SCW_PIPELINE_CFG_PORTS(X)                                                               \
   X(cfg_width_i) X(cfg_height_i) X(cfg_lead_i) X(cfg_dmin_i) X(cfg_num_disp_i)                \
   X(cfg_prefilter_i) X(cfg_cap_i) X(cfg_sad_limit_i) X(cfg_texture_i) X(cfg_uniqueness_i)     \
   X(cfg_subpixel_i) X(cfg_opencv_invalid_i) X(cfg_edge_i) X(cfg_tile_w_i) X(cfg_tile_h_i)     \
-  X(cfg_floor_i) X(cfg_min_area_i) X(cfg_road_enable_i) X(cfg_road_a0_i) X(cfg_road_b0_i)      \
-  X(cfg_road_a_min_i) X(cfg_road_a_max_i) X(cfg_road_h_min_i) X(cfg_road_h_max_i) X(cfg_road_tol_i)                \
-  X(cfg_road_tol_rel_i) X(cfg_road_gate_i) X(cfg_road_gate_rel_i) X(cfg_road_min_count_i)
+  X(cfg_floor_i) X(cfg_min_area_i)
 // clang-format on
 
 /// One port's value as drive_pipeline_cfg assigns it (its bit pattern, at most 32 bits).
@@ -65,12 +64,14 @@ struct CfgPorts {
   SCW_PIPELINE_CFG_PORTS(SCW_MEMBER)
 #undef SCW_MEMBER
   WidePort<sim::warning_cfg::kBits> cfg_warning_i;
+  WidePort<sim::road_cfg::kBits> cfg_road_i;
 };
 
-/// What drive_pipeline_cfg drives: the narrow ports' words in port order, and the warning word.
+/// What drive_pipeline_cfg drives: the narrow ports' words in port order, and the stages'
+/// configuration words.
 struct CfgDrive {
   std::vector<std::pair<std::string, std::uint32_t>> ports;
-  Bits warning;
+  Bits warning, road;
 };
 
 template <typename Build>
@@ -84,6 +85,7 @@ CfgDrive cfg_drive(const sim::PipelineSetup& s) {
   SCW_PIPELINE_CFG_PORTS(SCW_ENTRY)
 #undef SCW_ENTRY
   d.warning = Bits::from_port(p.cfg_warning_i, sim::warning_cfg::kBits);
+  d.road = Bits::from_port(p.cfg_road_i, sim::road_cfg::kBits);
   return d;
 }
 
@@ -256,9 +258,16 @@ PipelineSetSummary write_build(const PipelineSetOptions& o, const std::filesyste
   }
   out.add_hex("cfg.hex", "input", cfg_bits, {{"lines", lines}});
   using sim::warning_cfg::kConfigFields;
-  out.add_hex("cfg_warning.hex", "input", {cfg.warning},
-              {{"fields", field_layout(kConfigFields)},
-               {"values", field_values(kConfigFields, sim::warning_cfg::unpack(cfg.warning))}});
+  out.add_hex(
+      "cfg_warning.hex", "input", {cfg.warning},
+      {{"fields", field_layout(kConfigFields)},
+       {"values", field_values(kConfigFields, sim::words::unpack_word<hls::warning::WarningConfig>(
+                                                  cfg.warning, kConfigFields))}});
+  out.add_hex("cfg_road.hex", "input", {cfg.road},
+              {{"fields", field_layout(sim::road_cfg::kConfigFields)},
+               {"values", field_values(sim::road_cfg::kConfigFields,
+                                       sim::words::unpack_word<hls::road::RoadConfig>(
+                                           cfg.road, sim::road_cfg::kConfigFields))}});
   using G = typename Build::map_grid;
   out.add_hex(
       "knots.hex", "input", knot_words<G>(setup),

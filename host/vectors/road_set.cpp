@@ -21,6 +21,7 @@
 #include "sim/core/stream_check.hpp"
 #include "sim/models/road_model.hpp"
 #include "sim/words/pack.hpp"
+#include "sim/words/road_cfg.hpp"
 
 namespace scw::vectors {
 namespace {
@@ -436,34 +437,22 @@ RoadSetSummary write_set(const RoadSequence& seq, const std::filesystem::path& d
   }
 
   const RoadConfig& c = seq.cfg;
-  const nlohmann::json config = {
-      // The build (scw_road's parameters) and its constants.
-      {"build", seq.build},
-      {"ppc", Params::kPpc},
-      {"max_width_px", Params::kMaxWidthPx},
-      {"max_height", Params::kMaxHeight},
-      {"latency", hls::road::kLatency},
-      {"fit_clocks", hls::road::kFitClocks},
-      {"frac_bits", hls::road::kFracBits},
-      // Every RoadConfig field (the cfg_road_* ports), as the C++ holds it.
-      {"enable", c.enable},
-      {"nominal_a", c.nominal.a},
-      {"nominal_b", c.nominal.b},
-      {"a_min", c.a_min},
-      {"a_max", c.a_max},
-      {"h_min", c.h_min},
-      {"h_max", c.h_max},
-      {"tol_q4", c.tol_q4},
-      {"tol_rel_q8", c.tol_rel_q8},
-      {"gate_q4", c.gate_q4},
-      {"gate_rel_q8", c.gate_rel_q8},
-      {"min_count", c.min_count},
-      // The stream.
-      {"width", w},
-      {"height", h},
-      {"frames", frames},
-      {"beats", in.size()},
-      {"fits", sum.fits}};
+  nlohmann::json config = {// The build (scw_road's parameters) and its constants.
+                           {"build", seq.build},
+                           {"ppc", Params::kPpc},
+                           {"max_width_px", Params::kMaxWidthPx},
+                           {"max_height", Params::kMaxHeight},
+                           {"latency", hls::road::kLatency},
+                           {"fit_clocks", hls::road::kFitClocks},
+                           {"frac_bits", hls::road::kFracBits},
+                           // The stream.
+                           {"width", w},
+                           {"height", h},
+                           {"frames", frames},
+                           {"beats", in.size()},
+                           {"fits", sum.fits}};
+  // Every RoadConfig field, as the C++ holds it: the fields of the word cfg.hex holds.
+  config.update(field_values(sim::road_cfg::kConfigFields, c));
 
   const auto in_words = sim::pack_all(in);
   const auto out_words = sim::pack_all(want);
@@ -477,6 +466,9 @@ RoadSetSummary write_set(const RoadSequence& seq, const std::filesystem::path& d
   }
 
   VectorWriter vw(dir, "road", config, seq.description);
+  // The configuration word the testbench puts on cfg_road_i.
+  vw.add_hex("cfg.hex", "input", {sim::words::pack_word(c, sim::road_cfg::kConfigFields)},
+             {{"fields", field_layout(sim::road_cfg::kConfigFields)}});
   vw.add_hex("in.hex", "input", in_words, disparity_layout(Params::kPpc));
   vw.add_image("in.png", "input", stacked(in_images));
   vw.add_hex("expected.hex", "expected", out_words, disparity_layout(Params::kPpc));

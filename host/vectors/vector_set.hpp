@@ -90,9 +90,9 @@ nlohmann::json field_values(const Table& table, const S& s) {
   sim::words::for_each(table, [&](const auto& f) {
     using F = std::remove_cv_t<std::remove_reference_t<decltype(f)>>;
     if constexpr (std::is_enum_v<typename F::value_type>)
-      v[f.name] = static_cast<long long>(s.*f.member);
+      v[f.name] = static_cast<long long>(f.get(s));
     else
-      v[f.name] = s.*f.member;
+      v[f.name] = f.get(s);
   });
   return v;
 }

@@ -131,4 +131,34 @@ package scw_pkg;
     logic [CfgFieldBits-1:0]    focal_q4;
     logic [CfgBaselineBits-1:0] baseline_q8;
   } warning_cfg_t;
+  // The road stage's configuration (hls::road::RoadConfig), one word on the cfg_road_i port of
+  // scw_road and of the top: the layout here and in sim/words/road_cfg.hpp's kConfigFields. The
+  // slopes are codes x 2^12 a row (hls::road::kSlopeBits), the intercept two's complement, the
+  // horizon rows 0 .. 1023, the tolerances Q11.4 and their relative parts Q0.8, the fit's
+  // minimum pixel count 20 bits.
+  localparam int unsigned RoadSlopeBits     /*verilator public*/ = 18;
+  localparam int unsigned RoadInterceptBits /*verilator public*/ = 32;
+  localparam int unsigned RoadRowBits       /*verilator public*/ = 10;
+  localparam int unsigned RoadTolBits       /*verilator public*/ = 15;
+  localparam int unsigned RoadRelBits       /*verilator public*/ = 8;
+  localparam int unsigned RoadCountBits     /*verilator public*/ = 20;
+  // road_cfg_t's width (scw_road checks the two agree at elaboration).
+  localparam int unsigned RoadCfgBits       /*verilator public*/ =
+      1 + 3 * RoadSlopeBits + RoadInterceptBits + 2 * RoadRowBits + 2 * RoadTolBits +
+      2 * RoadRelBits + RoadCountBits;
+  // Most significant first: enable the lowest bit, min_count the highest.
+  typedef struct packed {
+    logic [RoadCountBits-1:0]     min_count;
+    logic [RoadRelBits-1:0]       gate_rel_q8;
+    logic [RoadTolBits-1:0]       gate_q4;
+    logic [RoadRelBits-1:0]       tol_rel_q8;
+    logic [RoadTolBits-1:0]       tol_q4;
+    logic [RoadRowBits-1:0]       h_max;
+    logic [RoadRowBits-1:0]       h_min;
+    logic [RoadSlopeBits-1:0]     a_max;
+    logic [RoadSlopeBits-1:0]     a_min;
+    logic [RoadInterceptBits-1:0] nominal_b;
+    logic [RoadSlopeBits-1:0]     nominal_a;
+    logic                         enable;
+  } road_cfg_t;
 endpackage

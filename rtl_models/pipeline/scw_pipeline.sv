@@ -77,19 +77,8 @@ module scw_pipeline #(
   input  logic [31:0]        cfg_min_area_i,
   // warning (hls::warning::WarningConfig): scw_pkg::warning_cfg_t
   input  logic [scw_pkg::WarningCfgBits-1:0] cfg_warning_i,
-  // road (hls::road::RoadConfig)
-  input  logic               cfg_road_enable_i,
-  input  logic [17:0]        cfg_road_a0_i,
-  input  logic signed [31:0] cfg_road_b0_i,
-  input  logic [17:0]        cfg_road_a_min_i,
-  input  logic [17:0]        cfg_road_a_max_i,
-  input  logic [9:0]         cfg_road_h_min_i,
-  input  logic [9:0]         cfg_road_h_max_i,
-  input  logic [14:0]        cfg_road_tol_i,
-  input  logic [7:0]         cfg_road_tol_rel_i,
-  input  logic [14:0]        cfg_road_gate_i,
-  input  logic [7:0]         cfg_road_gate_rel_i,
-  input  logic [19:0]        cfg_road_min_count_i,
+  // road (hls::road::RoadConfig): scw_pkg::road_cfg_t
+  input  logic [scw_pkg::RoadCfgBits-1:0] cfg_road_i,
   // map knots, written while run_i is low; knot_right_i picks the camera
   input  logic               run_i,
   input  logic               knot_we_i,
@@ -199,9 +188,7 @@ module scw_pipeline #(
 
   scw_road #(.Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)) u_road (
     .clk_i, .rst_ni,
-    .cfg_road_enable_i, .cfg_road_a0_i, .cfg_road_b0_i, .cfg_road_a_min_i, .cfg_road_a_max_i,
-    .cfg_road_h_min_i, .cfg_road_h_max_i, .cfg_road_tol_i, .cfg_road_tol_rel_i,
-    .cfg_road_gate_i, .cfg_road_gate_rel_i, .cfg_road_min_count_i,
+    .cfg_road_i,
     .in_valid_i(dq_valid), .in_ready_o(dq_ready), .in_data_i(dq_word[DispW-1:0]),
     .in_sof_i(dq_word[DispW]), .in_eol_i(dq_word[DispW+1]),
     .out_valid_o(r_valid), .out_ready_i(r_ready), .out_data_o(r_data), .out_sof_o(r_sof),

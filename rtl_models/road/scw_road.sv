@@ -38,19 +38,8 @@ module scw_road #(
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
-  // static configuration (hls::road::RoadConfig), lines in code x 2^12
-  input  logic             cfg_road_enable_i,
-  input  logic [17:0]      cfg_road_a0_i,         // nominal slope
-  input  logic [31:0]      cfg_road_b0_i,         // nominal intercept, signed
-  input  logic [17:0]      cfg_road_a_min_i,
-  input  logic [17:0]      cfg_road_a_max_i,
-  input  logic [9:0]       cfg_road_h_min_i,
-  input  logic [9:0]       cfg_road_h_max_i,
-  input  logic [14:0]      cfg_road_tol_i,        // Q11.4
-  input  logic [7:0]       cfg_road_tol_rel_i,    // Q0.8
-  input  logic [14:0]      cfg_road_gate_i,       // Q11.4
-  input  logic [7:0]       cfg_road_gate_rel_i,   // Q0.8
-  input  logic [19:0]      cfg_road_min_count_i,
+  // static configuration (hls::road::RoadConfig): scw_pkg::road_cfg_t, lines in code x 2^12
+  input  logic [scw_pkg::RoadCfgBits-1:0] cfg_road_i,
   // disparities in, pixel i in [i*16 +: 16]
   input  logic             in_valid_i,
   output logic             in_ready_o,
@@ -88,6 +77,12 @@ module scw_road #(
   end
   if (MaxWidthPx < 2 || MaxWidthPx > 2048 || MaxHeight < 2 || MaxHeight > 1024) begin : gen_bad_size
     $error("scw_road: need 2 <= MaxWidthPx <= 2048 and 2 <= MaxHeight <= 1024");
+  end
+
+  scw_pkg::road_cfg_t cfg;
+  assign cfg = cfg_road_i;
+  if ($bits(cfg) != scw_pkg::RoadCfgBits) begin : gen_bad_cfg
+    $error("scw_road: scw_pkg::RoadCfgBits is not road_cfg_t's width");
   end
 
   // ---- control: the fit between frames ---------------------------------------------------------
@@ -132,8 +127,8 @@ module scw_road #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      line_a_q    <= cfg_road_a0_i;
-      line_b_q    <= cfg_road_b0_i;
+      line_a_q    <= cfg.nominal_a;
+      line_b_q    <= cfg.nominal_b;
       road_lo_a_q <= '0;
       road_hi_a_q <= '0;
       road_lo_b_q <= '0;
@@ -295,7 +290,7 @@ module scw_road #(
       d0_data_q  <= in_data_i;
       d0_sof_q   <= in_sof_i;
       d0_eol_q   <= in_eol_i;
-      d0_zero_q  <= cfg_road_enable_i ? on_road : '0;
+      d0_zero_q  <= cfg.enable ? on_road : '0;
       out_data_q <= zeroed;
       out_sof_q  <= d0_sof_q;
       out_eol_q  <= d0_eol_q;
@@ -340,15 +335,15 @@ module scw_road #(
     .svv_i      (svv),
     .sd_i       (sd),
     .svd_i      (svd),
-    .min_count_i(cfg_road_min_count_i),
-    .a_min_i    (cfg_road_a_min_i),
-    .a_max_i    (cfg_road_a_max_i),
-    .h_min_i    (cfg_road_h_min_i),
-    .h_max_i    (cfg_road_h_max_i),
-    .tol_i      (cfg_road_tol_i),
-    .tol_rel_i  (cfg_road_tol_rel_i),
-    .gate_i     (cfg_road_gate_i),
-    .gate_rel_i (cfg_road_gate_rel_i),
+    .min_count_i(cfg.min_count),
+    .a_min_i    (cfg.a_min),
+    .a_max_i    (cfg.a_max),
+    .h_min_i    (cfg.h_min),
+    .h_max_i    (cfg.h_max),
+    .tol_i      (cfg.tol_q4),
+    .tol_rel_i  (cfg.tol_rel_q8),
+    .gate_i     (cfg.gate_q4),
+    .gate_rel_i (cfg.gate_rel_q8),
     .keep_a_i   (line_a_q),
     .keep_b_i   (line_b_q),
     .done_o     (fit_done),

@@ -9,6 +9,7 @@
 #include "hls/road/road.hpp"
 #include "sim/core/side_component.hpp"
 #include "sim/rtl/rtl_stream.hpp"
+#include "sim/words/road_cfg.hpp"
 
 namespace scw::sim {
 
@@ -28,21 +29,11 @@ constexpr bool road_params_match() {
 template <typename VM, typename Params>
 using RoadRtl = RtlStream<VM, typename Params::in_beat, typename Params::out_beat>;
 
-/// Drives the cfg_* ports of a scw_road (or of a top that passes them through) from `cfg`.
+/// Drives the configuration word cfg_road_i of a scw_road (or of a top that passes it through)
+/// from `cfg`, packed by its one field table.
 template <typename VM>
 void drive_road_config(VM& m, const hls::road::RoadConfig& cfg) {
-  m.cfg_road_enable_i = cfg.enable ? 1 : 0;
-  m.cfg_road_a0_i = static_cast<unsigned>(cfg.nominal.a);
-  m.cfg_road_b0_i = static_cast<unsigned>(cfg.nominal.b);
-  m.cfg_road_a_min_i = static_cast<unsigned>(cfg.a_min);
-  m.cfg_road_a_max_i = static_cast<unsigned>(cfg.a_max);
-  m.cfg_road_h_min_i = cfg.h_min;
-  m.cfg_road_h_max_i = cfg.h_max;
-  m.cfg_road_tol_i = cfg.tol_q4;
-  m.cfg_road_tol_rel_i = cfg.tol_rel_q8;
-  m.cfg_road_gate_i = cfg.gate_q4;
-  m.cfg_road_gate_rel_i = cfg.gate_rel_q8;
-  m.cfg_road_min_count_i = cfg.min_count;
+  words::pack_word(cfg, road_cfg::kConfigFields).to_port(m.cfg_road_i);
 }
 
 /// Checks `cfg` as the model does (std::invalid_argument) and drives the cfg_* ports from it

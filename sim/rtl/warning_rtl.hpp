@@ -28,7 +28,7 @@ constexpr bool warning_params_match() {
 /// passes it on), packed by its one field table.
 template <typename VM>
 void drive_warning_cfg(VM& m, const hls::warning::WarningConfig& cfg) {
-  warning_cfg::pack(cfg).to_port(m.cfg_warning_i);
+  words::pack_word(cfg, warning_cfg::kConfigFields).to_port(m.cfg_warning_i);
 }
 
 /// The ports of scw_warning as a join: `a` the object words (in_*, with in_last_i), `b` the road

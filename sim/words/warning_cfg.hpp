@@ -12,7 +12,6 @@
 
 #include "hls/warning/warning_params.hpp"
 #include "scw_pkg.hpp"
-#include "sim/words/bits.hpp"
 #include "sim/words/fields.hpp"
 
 namespace scw::sim::warning_cfg {
@@ -46,19 +45,5 @@ inline constexpr auto kConfigFields = std::make_tuple(
 
 inline constexpr int kBits = words::bits_of(kConfigFields);
 static_assert(words::fits_types(kConfigFields), "each field fits its C++ member");
-
-/// The word of `cfg`, fields above their widths cut (check_config refuses such a config first).
-inline Bits pack(const WarningConfig& cfg) {
-  Bits w(kBits);
-  words::pack_fields(w, 0, cfg, kConfigFields);
-  return w;
-}
-
-/// The config a word holds (road_height false).
-inline WarningConfig unpack(const Bits& w) {
-  WarningConfig cfg;
-  words::unpack_fields(w, 0, cfg, kConfigFields);
-  return cfg;
-}
 
 }  // namespace scw::sim::warning_cfg

@@ -5,6 +5,8 @@
 
 #include "sim/words/labelling_pack.hpp"
 #include "sim/words/pipeline_pack.hpp"
+#include "sim/words/road_cfg.hpp"
+#include "sim/words/warning_cfg.hpp"
 #include "sim/words/warning_pack.hpp"
 
 namespace {
@@ -92,4 +94,49 @@ TEST_CASE("the labelling word packs objects and status words through their table
   CHECK(sb.data.status.objects == 9);
   CHECK(sb.data.status.object_overflow);
   CHECK_FALSE(sb.data.status.tile_overflow);
+}
+
+TEST_CASE("the warning and road configuration words pack their fields at their places and back",
+          "[sim][words]") {
+  using sim::words::pack_word;
+  using sim::words::unpack_word;
+  hls::warning::WarningConfig w;
+  w.baseline_q8 = 0xfffff;  // the 20-bit field full
+  w.focal_q4 = 11200;
+  w.veh_x_mm = -300;  // two's complement, sign-extended back
+  w.veh_z_mm = 1650;
+  w.d_limit_q4 = 1024;
+  w.rule = hls::warning::DistanceRule::kSpread;
+  w.spread_q4 = 0xff;
+  const sim::Bits ww = pack_word(w, sim::warning_cfg::kConfigFields);
+  CHECK(ww.width() == 237);
+  CHECK(ww.get(0, 20) == 0xfffff);
+  CHECK(ww.get(20, 16) == 11200);
+  CHECK(ww.get(68, 16) == 0xfed4);  // -300
+  CHECK(ww.get(100, 16) == 1650);
+  CHECK(ww.get(212, 16) == 1024);
+  CHECK(ww.get(228, 1) == 1);
+  CHECK(ww.get(229, 8) == 0xff);  // spread_q4, the top field
+  const auto wb = unpack_word<hls::warning::WarningConfig>(ww, sim::warning_cfg::kConfigFields);
+  CHECK(wb.veh_x_mm == -300);
+  CHECK(wb.rule == hls::warning::DistanceRule::kSpread);
+  CHECK(pack_word(wb, sim::warning_cfg::kConfigFields) == ww);
+
+  hls::road::RoadConfig r;
+  r.enable = true;
+  r.nominal = {0x3ffff, -613417};  // the largest slope: 18 bits, read back as a code, not signed
+  r.a_min = 0x20000;               // bit 17 set: a code, not a negative number
+  r.h_max = 1023;
+  r.min_count = 0xfffff;
+  const sim::Bits rw = pack_word(r, sim::road_cfg::kConfigFields);
+  CHECK(rw.width() == 173);
+  CHECK(rw.get(0, 1) == 1);
+  CHECK(rw.get(1, 18) == 0x3ffff);
+  CHECK(rw.get(19, 32) == static_cast<std::uint32_t>(-613417));
+  CHECK(rw.get(51, 18) == 0x20000);
+  CHECK(rw.get(97, 10) == 1023);
+  CHECK(rw.get(153, 20) == 0xfffff);  // min_count, the top field
+  const auto rb = unpack_word<hls::road::RoadConfig>(rw, sim::road_cfg::kConfigFields);
+  CHECK(rb == r);
+  CHECK(rb.a_min == 0x20000);
 }

@@ -26,8 +26,9 @@ module tb_pipeline_replay #(
   parameter int MaxDisparityPx = 32,
   parameter int Width          = 64,  // the frames'
   parameter int Height         = 32,
-  parameter int CfgWords       = 29,  // cfg.hex: one 32-bit word per narrow cfg_* port, in order
+  parameter int CfgWords       = 17,  // cfg.hex: one 32-bit word per narrow cfg_* port, in order
   parameter int WarningCfgW    = 237,  // cfg_warning.hex: cfg_warning_i (scw_pkg::WarningCfgBits)
+  parameter int RoadCfgW       = 173,  // cfg_road.hex: cfg_road_i (scw_pkg::RoadCfgBits)
   parameter int KnotBits       = 29,  // knots.hex: {right, address, knot}
   parameter int Knots          = 1,
   parameter int RawBeats       = 1,   // left.hex, right.hex: {eol, sof, px}
@@ -57,6 +58,7 @@ module tb_pipeline_replay #(
 
   logic [31:0]         cfg     [CfgWords];
   logic [WarningCfgW-1:0] cfg_warning [1];
+  logic [RoadCfgW-1:0] cfg_road [1];
   logic [KnotBits-1:0] knot    [Knots];
   logic [BeatW+1:0]    l_mem   [RawBeats];
   logic [BeatW+1:0]    r_mem   [RawBeats];
@@ -67,6 +69,7 @@ module tb_pipeline_replay #(
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
     $readmemh({dir, "/cfg.hex"}, cfg, 0, CfgWords - 1);
     $readmemh({dir, "/cfg_warning.hex"}, cfg_warning, 0, 0);
+    $readmemh({dir, "/cfg_road.hex"}, cfg_road, 0, 0);
     $readmemh({dir, "/knots.hex"}, knot, 0, Knots - 1);
     $readmemh({dir, "/left.hex"}, l_mem, 0, RawBeats - 1);
     $readmemh({dir, "/right.hex"}, r_mem, 0, RawBeats - 1);
@@ -128,12 +131,7 @@ module tb_pipeline_replay #(
     .cfg_tile_w_i(cfg[13][15:0]), .cfg_tile_h_i(cfg[14][15:0]), .cfg_floor_i(cfg[15][15:0]),
     .cfg_min_area_i(cfg[16]),
     .cfg_warning_i(cfg_warning[0]),
-    .cfg_road_enable_i(cfg[17][0]), .cfg_road_a0_i(cfg[18][17:0]), .cfg_road_b0_i(cfg[19]),
-    .cfg_road_a_min_i(cfg[20][17:0]), .cfg_road_a_max_i(cfg[21][17:0]),
-    .cfg_road_h_min_i(cfg[22][9:0]), .cfg_road_h_max_i(cfg[23][9:0]),
-    .cfg_road_tol_i(cfg[24][14:0]), .cfg_road_tol_rel_i(cfg[25][7:0]),
-    .cfg_road_gate_i(cfg[26][14:0]), .cfg_road_gate_rel_i(cfg[27][7:0]),
-    .cfg_road_min_count_i(cfg[28][19:0]),
+    .cfg_road_i(cfg_road[0]),
     .run_i(run), .knot_we_i(knot_we), .knot_right_i(knot_w[KnotBits-1]),
     .knot_addr_i(knot_w[KnotW +: KAddrW]), .knot_data_i(knot_w[KnotW-1:0]),
     .l_valid_i(l_valid), .l_ready_o(l_ready), .l_data_i(l_beat[BeatW-1:0]),

@@ -4,11 +4,11 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run with the set's manifest.json config as plusargs: +vectors=<set folder> +width +height and
-// the RoadConfig fields +enable +nominal_a +nominal_b +a_min +a_max +h_min +h_max +tol_q4
-// +tol_rel_q8 +gate_q4 +gate_rel_q8 +min_count (decimal; nominal_b is negative). Parameters:
-// config.ppc, max_width_px, max_height (the build), beats (lines of in.hex and expected.hex),
-// frames and fit_clocks (for the timeout only). +stalls=0 turns the idle input cycles and the
+// Run with +vectors=<set folder> +width +height (the manifest's config): the stage's
+// configuration is the set's cfg.hex, one word for cfg_road_i (scw_pkg::road_cfg_t; its fields
+// in the manifest's layout). Parameters: config.ppc, max_width_px, max_height (the build), beats
+// (lines of in.hex and expected.hex), frames and fit_clocks (for the timeout only), CfgW
+// (cfg.hex's width). +stalls=0 turns the idle input cycles and the
 // backpressure off (to tell a stall bug from another).
 // Plain SystemVerilog that Verilator 5.006 and Icarus Verilog 11 (-g2012) both take: no `inside`,
 // no `int unsigned` parameters, no concurrent assertions.
@@ -18,7 +18,8 @@ module tb_road_replay #(
   parameter int MaxHeight  = 48,
   parameter int Beats      = 1536,
   parameter int Frames     = 1,
-  parameter int FitClocks  = 256
+  parameter int FitClocks  = 256,
+  parameter int CfgW       = 173   // scw_pkg::RoadCfgBits
 );
   localparam int DataW = Ppc * 16;
   // Generous: a beat a clock, a fit before every frame; the source idles 1 clock in 4 and the
@@ -31,24 +32,15 @@ module tb_road_replay #(
   logic [DataW+1:0] in_mem  [Beats];  // {eol, sof, px[Ppc-1] .. px[0]}, 16-bit Q11.4 pixels
   logic [DataW+1:0] exp_mem [Beats];
   string dir;
-  int width, height, enable, nominal_a, nominal_b, a_min, a_max, h_min, h_max, tol_q4;
-  int tol_rel_q8, gate_q4, gate_rel_q8, min_count;
+  int width, height;
+  logic [CfgW-1:0] cfg_mem [1];
   int stalls = 1;
   int per_row = 1, per_frame = 1;  // beats
   initial begin
     if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
-    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
-        !$value$plusargs("enable=%d", enable) || !$value$plusargs("nominal_a=%d", nominal_a) ||
-        !$value$plusargs("nominal_b=%d", nominal_b) || !$value$plusargs("a_min=%d", a_min) ||
-        !$value$plusargs("a_max=%d", a_max) || !$value$plusargs("h_min=%d", h_min) ||
-        !$value$plusargs("h_max=%d", h_max) || !$value$plusargs("tol_q4=%d", tol_q4) ||
-        !$value$plusargs("tol_rel_q8=%d", tol_rel_q8) ||
-        !$value$plusargs("gate_q4=%d", gate_q4) ||
-        !$value$plusargs("gate_rel_q8=%d", gate_rel_q8) ||
-        !$value$plusargs("min_count=%d", min_count))
-      $fatal(1, "give the set's config: +width +height +enable +nominal_a +nominal_b +a_min ",
-             "+a_max +h_min +h_max +tol_q4 +tol_rel_q8 +gate_q4 +gate_rel_q8 +min_count");
+    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height))
+      $fatal(1, "give the set's config: +width +height");
     if (width % Ppc != 0 || width > MaxWidthPx || height > MaxHeight)
       $fatal(1, "a %0d x %0d frame does not fit the build (Ppc %0d, MaxWidthPx %0d, MaxHeight %0d)",
              width, height, Ppc, MaxWidthPx, MaxHeight);
@@ -57,6 +49,7 @@ module tb_road_replay #(
     if (per_frame * Frames != Beats)
       $fatal(1, "%0d frames of %0d x %0d at %0d px a beat are not %0d beats", Frames, width,
              height, Ppc, Beats);
+    $readmemh({dir, "/cfg.hex"}, cfg_mem, 0, 0);
     $readmemh({dir, "/in.hex"}, in_mem, 0, Beats - 1);
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
   end
@@ -65,30 +58,10 @@ module tb_road_replay #(
   always #4 clk = ~clk;  // 125 MHz
   // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
   // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
-  initial #22 rst_n = 1'b1;  // cfg_* are set at time 0, before reset ends, and stay
+  initial #22 rst_n = 1'b1;  // cfg_road_i is set at time 0, before reset ends, and stays
 
   int cyc = 0;
   always_ff @(posedge clk) cyc <= cyc + 1;
-
-  // The cfg ports from the plusargs, at the ports' widths (rtl_models/road/scw_road.sv): lines in
-  // code x 2^12 (the intercept signed), tolerances Q11.4, relative ones Q0.8.
-  logic [17:0] cfg_a0, cfg_a_min, cfg_a_max;
-  logic [31:0] cfg_b0;
-  logic [9:0]  cfg_h_min, cfg_h_max;
-  logic [14:0] cfg_tol, cfg_gate;
-  logic [7:0]  cfg_tol_rel, cfg_gate_rel;
-  logic [19:0] cfg_min_count;
-  assign cfg_a0 = 18'(nominal_a);
-  assign cfg_b0 = 32'(nominal_b);
-  assign cfg_a_min = 18'(a_min);
-  assign cfg_a_max = 18'(a_max);
-  assign cfg_h_min = 10'(h_min);
-  assign cfg_h_max = 10'(h_max);
-  assign cfg_tol = 15'(tol_q4);
-  assign cfg_tol_rel = 8'(tol_rel_q8);
-  assign cfg_gate = 15'(gate_q4);
-  assign cfg_gate_rel = 8'(gate_rel_q8);
-  assign cfg_min_count = 20'(min_count);
 
   // Source: offers on 3 of 4 cycles; a beat once offered is held until taken (the stage holds a
   // sof for the fit between frames).
@@ -115,11 +88,7 @@ module tb_road_replay #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)
   ) u_dut (
     .clk_i(clk), .rst_ni(rst_n),
-    .cfg_road_enable_i(enable != 0), .cfg_road_a0_i(cfg_a0), .cfg_road_b0_i(cfg_b0),
-    .cfg_road_a_min_i(cfg_a_min), .cfg_road_a_max_i(cfg_a_max), .cfg_road_h_min_i(cfg_h_min),
-    .cfg_road_h_max_i(cfg_h_max), .cfg_road_tol_i(cfg_tol), .cfg_road_tol_rel_i(cfg_tol_rel),
-    .cfg_road_gate_i(cfg_gate), .cfg_road_gate_rel_i(cfg_gate_rel),
-    .cfg_road_min_count_i(cfg_min_count),
+    .cfg_road_i(cfg_mem[0]),
     .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_beat[DataW-1:0]),
     .in_sof_i(in_beat[DataW]), .in_eol_i(in_beat[DataW+1]),
     .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
