@@ -97,11 +97,8 @@ case "$stage" in
          "$(cd "$root/rtl_models" && echo disparity/*.sv)")
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height Window=window
                 NumDisp=num_disp)
-    tb_params=(Beats=beats)
-    plusargs=(width=width height=height dmin=dmin num_disp=num_disp prefilter=prefilter
-              cap=prefilter_cap sad_limit=sad_limit texture=texture_threshold
-              uniqueness=uniqueness_ratio subpixel=subpixel opencv_invalid=opencv_invalid
-              edge=edge_candidates) ;;
+    tb_params=("Beats=$(file_field left.hex beats)" "CfgW=$(file_field cfg.hex width_bits)")
+    plusargs=(width=width height=height) ;;
   labelling)
     tb=labelling/tb/tb_labelling_replay.sv top=scw_labelling
     rtl=(common/scw_ram_sdp.sv common/scw_fifo.sv "$(cd "$root/rtl_models" && echo labelling/*.sv)")
@@ -140,6 +137,7 @@ case "$stage" in
     tb_params=(Width=width Height=height CfgWords=cfg_words
                "WarningCfgW=$(file_field cfg_warning.hex width_bits)"
                "RoadCfgW=$(file_field cfg_road.hex width_bits)"
+               "DisparityCfgW=$(file_field cfg_disparity.hex width_bits)"
                "KnotBits=$(file_field knots.hex width_bits)" "Knots=$(file_field knots.hex beats)"
                "RawBeats=$(file_field left.hex beats)" "DispBeats=$(file_field disparity.hex beats)"
                "ObjBits=$(file_field objects.hex width_bits)"

@@ -13,6 +13,7 @@
 #include "host/reference/disparity_ref.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/core/frame_beats.hpp"
+#include "sim/words/disparity_cfg.hpp"
 #include "sim/words/pack.hpp"
 
 namespace scw::vectors {
@@ -140,13 +141,18 @@ nlohmann::json config_json(const DisparityFrame& f, std::uint16_t invalid) {
 
 template <int P, typename In, typename Out>
 void write_files(const std::filesystem::path& dir, const DisparityFrame& f,
-                 const nlohmann::json& config, const std::vector<In>& l, const std::vector<In>& r,
-                 const std::vector<Out>& expect, const std::vector<std::uint16_t>& ref) {
+                 const nlohmann::json& config, const sim::Bits& cfg_word, const std::vector<In>& l,
+                 const std::vector<In>& r, const std::vector<Out>& expect,
+                 const std::vector<std::uint16_t>& ref) {
   constexpr int kPpc = P;
   auto disp_layout = pixel_beat_layout(kPpc, 16);
   disp_layout["signed"] = true;
   disp_layout["frac_bits"] = 4;
   VectorWriter vw(dir, "disparity", config, f.description);
+  // The configuration word the testbench puts on cfg_disparity_i: what the build reads of the
+  // config (disparity_cfg::port_config), its fields in the layout.
+  vw.add_hex("cfg.hex", "input", {cfg_word},
+             {{"fields", field_layout(sim::disparity_cfg::kConfigFields)}});
   vw.add_image("left.png", "input", stacked(f.left));
   vw.add_image("right.png", "input", stacked(f.right));
   vw.add_hex("left.hex", "input", sim::pack_all(l), pixel_beat_layout(kPpc, 8));
@@ -213,7 +219,9 @@ DisparitySetSummary run(const DisparityFrame& f, const std::filesystem::path& di
                                sim::pack(expect[i]).hex());
   const std::uint16_t invalid = hls::disparity::invalid_code(cfg);
   if (!f.shift.empty()) count_known_shifts(f, ref, invalid, sum);
-  write_files<kPpc>(dir, f, config_json<Params>(f, invalid), l, r, expect, ref);
+  const sim::Bits cfg_word = sim::words::pack_word(
+      sim::disparity_cfg::port_config<Params::kNumDisp>(cfg), sim::disparity_cfg::kConfigFields);
+  write_files<kPpc>(dir, f, config_json<Params>(f, invalid), cfg_word, l, r, expect, ref);
   sum.width = w;
   sum.height = h;
   sum.frames = static_cast<int>(f.left.size());

@@ -17,6 +17,7 @@
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "sim/pipeline/pipeline_chain.hpp"
 #include "sim/pipeline/pipeline_top.hpp"
+#include "sim/words/disparity_cfg.hpp"
 #include "sim/words/pack.hpp"
 #include "sim/words/road_cfg.hpp"
 #include "sim/words/warning_cfg.hpp"
@@ -28,15 +29,14 @@ using json = nlohmann::json;
 using sim::Bits;
 
 // scw_pipeline's cfg_* ports of at most 32 bits in port order: cfg.hex holds one 32-bit word for
-// each, and tests/pipeline/tb/tb_pipeline_replay.sv connects them in this order; the warning
-// and road stages' words (cfg_warning_i, cfg_road_i) are cfg_warning.hex and cfg_road.hex. The
-// values come from sim::drive_pipeline_cfg, the function that configures the Verilated top.
+// each, and tests/pipeline/tb/tb_pipeline_replay.sv connects them in this order; the disparity,
+// warning and road stages' words (cfg_disparity_i, cfg_warning_i, cfg_road_i) are
+// cfg_disparity.hex, cfg_warning.hex and cfg_road.hex. The values come from
+// sim::drive_pipeline_cfg, the function that configures the Verilated top.
 // clang-format off
 #define SCW_PIPELINE_CFG_PORTS(X)                                                               \
-  X(cfg_width_i) X(cfg_height_i) X(cfg_lead_i) X(cfg_dmin_i) X(cfg_num_disp_i)                \
-  X(cfg_prefilter_i) X(cfg_cap_i) X(cfg_sad_limit_i) X(cfg_texture_i) X(cfg_uniqueness_i)     \
-  X(cfg_subpixel_i) X(cfg_opencv_invalid_i) X(cfg_edge_i) X(cfg_tile_w_i) X(cfg_tile_h_i)     \
-  X(cfg_floor_i) X(cfg_min_area_i)
+  X(cfg_width_i) X(cfg_height_i) X(cfg_lead_i) X(cfg_tile_w_i) X(cfg_tile_h_i) X(cfg_floor_i)   \
+  X(cfg_min_area_i)
 // clang-format on
 
 /// One port's value as drive_pipeline_cfg assigns it (its bit pattern, at most 32 bits).
@@ -63,6 +63,7 @@ struct CfgPorts {
 #define SCW_MEMBER(port) CfgValue port;
   SCW_PIPELINE_CFG_PORTS(SCW_MEMBER)
 #undef SCW_MEMBER
+  WidePort<sim::disparity_cfg::kBits> cfg_disparity_i;
   WidePort<sim::warning_cfg::kBits> cfg_warning_i;
   WidePort<sim::road_cfg::kBits> cfg_road_i;
 };
@@ -71,7 +72,7 @@ struct CfgPorts {
 /// configuration words.
 struct CfgDrive {
   std::vector<std::pair<std::string, std::uint32_t>> ports;
-  Bits warning, road;
+  Bits disparity, warning, road;
 };
 
 template <typename Build>
@@ -84,6 +85,7 @@ CfgDrive cfg_drive(const sim::PipelineSetup& s) {
   d.ports.emplace_back(#port, p.port.value);
   SCW_PIPELINE_CFG_PORTS(SCW_ENTRY)
 #undef SCW_ENTRY
+  d.disparity = Bits::from_port(p.cfg_disparity_i, sim::disparity_cfg::kBits);
   d.warning = Bits::from_port(p.cfg_warning_i, sim::warning_cfg::kBits);
   d.road = Bits::from_port(p.cfg_road_i, sim::road_cfg::kBits);
   return d;
@@ -257,6 +259,11 @@ PipelineSetSummary write_build(const PipelineSetOptions& o, const std::filesyste
     lines.push_back({{"name", port}, {"value", value}});
   }
   out.add_hex("cfg.hex", "input", cfg_bits, {{"lines", lines}});
+  out.add_hex("cfg_disparity.hex", "input", {cfg.disparity},
+              {{"fields", field_layout(sim::disparity_cfg::kConfigFields)},
+               {"values", field_values(sim::disparity_cfg::kConfigFields,
+                                       sim::words::unpack_word<hls::disparity::DisparityConfig>(
+                                           cfg.disparity, sim::disparity_cfg::kConfigFields))}});
   using sim::warning_cfg::kConfigFields;
   out.add_hex(
       "cfg_warning.hex", "input", {cfg.warning},

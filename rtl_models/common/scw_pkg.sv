@@ -161,4 +161,32 @@ package scw_pkg;
     logic [RoadSlopeBits-1:0]     nominal_a;
     logic                         enable;
   } road_cfg_t;
+  // The disparity stage's configuration (hls::disparity::DisparityConfig but the frame's width
+  // and height, the top's cfg_width_i and cfg_height_i), one word on the cfg_disparity_i port of
+  // scw_disparity and of the top: the layout here and in sim/words/disparity_cfg.hpp's
+  // kConfigFields. The widths are those of the largest build (MaxWidthPx 2048, NumDisp 128); a
+  // build reads the low $clog2(MaxWidthPx + 1) bits of dmin and compares num_disp and
+  // edge_candidates whole. The SAD limit and the texture threshold are the C++ int fields, at
+  // least 0 (0 is off).
+  localparam int unsigned DispDminBits   /*verilator public*/ = 12;
+  localparam int unsigned DispNumBits    /*verilator public*/ = 8;
+  localparam int unsigned DispCapBits    /*verilator public*/ = 6;
+  localparam int unsigned DispLimitBits  /*verilator public*/ = 32;
+  localparam int unsigned DispRatioBits  /*verilator public*/ = 8;
+  // disparity_cfg_t's width (scw_disparity checks the two agree at elaboration).
+  localparam int unsigned DisparityCfgBits /*verilator public*/ =
+      DispDminBits + 2 * DispNumBits + DispCapBits + 2 * DispLimitBits + DispRatioBits + 3;
+  // Most significant first: dmin the lowest bits, edge_candidates the highest.
+  typedef struct packed {
+    logic [DispNumBits-1:0]   edge_candidates;
+    logic                     opencv_invalid;
+    logic                     subpixel;
+    logic [DispRatioBits-1:0] uniqueness_ratio;
+    logic [DispLimitBits-1:0] texture_threshold;
+    logic [DispLimitBits-1:0] sad_limit;
+    logic [DispCapBits-1:0]   prefilter_cap;
+    logic                     prefilter;
+    logic [DispNumBits-1:0]   num_disp;
+    logic [DispDminBits-1:0]  dmin;
+  } disparity_cfg_t;
 endpackage

@@ -37,16 +37,8 @@ module scw_disparity #(
   // static configuration (hls::disparity::DisparityConfig)
   input  logic [WW-1:0]    cfg_width_i,
   input  logic [HW-1:0]    cfg_height_i,
-  input  logic [WW-1:0]    cfg_dmin_i,
-  input  logic [NumW-1:0]  cfg_num_disp_i,   // 0 or >= NumDisp: all NumDisp candidates
-  input  logic             cfg_prefilter_i,
-  input  logic [5:0]       cfg_cap_i,
-  input  logic [31:0]      cfg_sad_limit_i,
-  input  logic [31:0]      cfg_texture_i,
-  input  logic [7:0]       cfg_uniqueness_i,
-  input  logic             cfg_subpixel_i,
-  input  logic             cfg_opencv_invalid_i,
-  input  logic [NumW-1:0]  cfg_edge_i,       // edge_candidates: 0 or >= n = all n (StereoBM)
+  // the rest: scw_pkg::disparity_cfg_t (num_disp, edge_candidates: 0 or >= NumDisp, n = all)
+  input  logic [scw_pkg::DisparityCfgBits-1:0] cfg_disparity_i,
   // left and right rectified pixels
   input  logic             l_valid_i,
   output logic             l_ready_o,
@@ -124,6 +116,21 @@ module scw_disparity #(
       oz_q[i]           <= oc != '0;
     end
   end
+  scw_pkg::disparity_cfg_t cfg;
+  assign cfg = cfg_disparity_i;
+  if ($bits(cfg) != scw_pkg::DisparityCfgBits) begin : gen_bad_cfg
+    $error("scw_disparity: scw_pkg::DisparityCfgBits is not disparity_cfg_t's width");
+  end
+  if (WW > scw_pkg::DispDminBits || NumW > scw_pkg::DispNumBits) begin : gen_bad_cfg_widths
+    $error("scw_disparity: MaxWidthPx or NumDisp beyond disparity_cfg_t's dmin or num_disp");
+  end
+  // The build's dmin: a frame's dmin is below its width (DisparityConfig's check).
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [scw_pkg::DispDminBits-1:0] dmin_cfg;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [WW-1:0] dmin_w;
+  assign dmin_cfg = cfg.dmin;
+  assign dmin_w   = dmin_cfg[WW-1:0];
   logic [15:0] invalid_q;
   logic prefilter_q;
   always_ff @(posedge clk_i) begin
@@ -132,17 +139,19 @@ module scw_disparity #(
     last_col_q    <= ColW'((cfg_width_i >> $clog2(Ppc)) - 1'b1);
     last_col_m1_q <= ColW'((cfg_width_i >> $clog2(Ppc)) - WW'(2));
     last_row_q    <= cfg_height_i - 1'b1;
-    dmin_q        <= cfg_dmin_i;
-    num_q         <= (cfg_num_disp_i == '0 || cfg_num_disp_i >= NumW'(NumDisp))
-                         ? NumW'(NumDisp) : cfg_num_disp_i;
+    dmin_q        <= dmin_w;
+    num_q         <= (cfg.num_disp == '0 || cfg.num_disp >= scw_pkg::DispNumBits'(NumDisp))
+                         ? NumW'(NumDisp) : NumW'(cfg.num_disp);
     // edge_min<NumDisp>(cfg): the fewest candidates a column is decided among.
-    edge_q        <= (cfg_edge_i == '0 || cfg_edge_i >= num_q) ? num_q : cfg_edge_i;
-    first_valid_q <= XW'(cfg_dmin_i) + XW'(edge_q) - 1'b1 + XW'(R);
-    edge_base_q   <= XW'(cfg_dmin_i) + XW'(2 * R) - 1'b1;
+    edge_q        <= (cfg.edge_candidates == '0 ||
+                      cfg.edge_candidates >= scw_pkg::DispNumBits'(num_q))
+                         ? num_q : NumW'(cfg.edge_candidates);
+    first_valid_q <= XW'(dmin_w) + XW'(edge_q) - 1'b1 + XW'(R);
+    edge_base_q   <= XW'(dmin_w) + XW'(2 * R) - 1'b1;
     fvr_q         <= first_valid_q + XW'(R);
     hrm_q         <= XW'(cfg_height_i) - XW'(R + 1);
-    invalid_q     <= cfg_opencv_invalid_i ? {12'(cfg_dmin_i) - 12'd1, 4'd0} : '0;
-    prefilter_q   <= cfg_prefilter_i;
+    invalid_q     <= cfg.opencv_invalid ? {12'(dmin_w) - 12'd1, 4'd0} : '0;
+    prefilter_q   <= cfg.prefilter;
   end
 
   // ---- credits ---------------------------------------------------------------------------
@@ -250,13 +259,15 @@ module scw_disparity #(
   assign pf_rd         = prefilter_q && pf_rd_allowed && core_room;
 
   scw_disparity_prefilter #(.Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)) u_pf_l (
-    .clk_i, .rst_ni, .cfg_width_i(width_q), .cfg_height_i(height_q), .cfg_cap_i,
+    .clk_i, .rst_ni, .cfg_width_i(width_q), .cfg_height_i(height_q),
+    .cfg_cap_i(cfg.prefilter_cap),
     .wr_allowed_o(pf_l_wr_allowed), .wr_i(pf_wr), .wr_data_i(have_l),
     .rd_allowed_o(pf_l_rd_allowed), .rd_i(pf_rd),
     .out_valid_o(pf_l_valid), .out_data_o(pf_l_data)
   );
   scw_disparity_prefilter #(.Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight)) u_pf_r (
-    .clk_i, .rst_ni, .cfg_width_i(width_q), .cfg_height_i(height_q), .cfg_cap_i,
+    .clk_i, .rst_ni, .cfg_width_i(width_q), .cfg_height_i(height_q),
+    .cfg_cap_i(cfg.prefilter_cap),
     .wr_allowed_o(pf_r_wr_allowed), .wr_i(pf_wr), .wr_data_i(have_r),
     .rd_allowed_o(pf_r_rd_allowed), .rd_i(pf_rd),
     .out_valid_o(pf_r_valid), .out_data_o(pf_r_data)
@@ -430,7 +441,7 @@ module scw_disparity #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Window(Window),
     .NumDisp(NumDisp), .TagBits(TagW)
   ) u_sums (
-    .clk_i, .rst_ni, .cfg_dmin_i(dmin_q), .cfg_cap_i,
+    .clk_i, .rst_ni, .cfg_dmin_i(dmin_q), .cfg_cap_i(cfg.prefilter_cap),
     .valid_i(c_valid), .col_i(c_col), .row_i(c_row), .base_i(c_base),
     .old_base_i(c_old_base),
     .left_i(c_left), .right_i(c_right), .tag_i({c_limit, c_emit, c_region}),
@@ -456,8 +467,9 @@ module scw_disparity #(
     // A lane without an output pixel is not decided at all: its valid never reaches the queue.
     scw_disparity_decide #(.NumDisp(NumDisp), .SadBits(SadBits), .DminBits(WW)) u_decide (
       .clk_i, .rst_ni,
-      .cfg_num_i(num_q), .cfg_dmin_i(dmin_q), .cfg_sad_limit_i, .cfg_texture_i,
-      .cfg_uniqueness_i, .cfg_subpixel_i, .cfg_invalid_i(invalid_q),
+      .cfg_num_i(num_q), .cfg_dmin_i(dmin_q), .cfg_sad_limit_i(cfg.sad_limit),
+      .cfg_texture_i(cfg.texture_threshold), .cfg_uniqueness_i(cfg.uniqueness_ratio),
+      .cfg_subpixel_i(cfg.subpixel), .cfg_invalid_i(invalid_q),
       .valid_i(s_valid && s_tag[Ppc + i]), .region_i(s_tag[i]),
       .sad_i(s_sad[i*NumDisp*SadBits +: NumDisp*SadBits]),
       .band_i(band_q[i*NumDisp +: NumDisp]), .limit_i(s_limit[i*NumW +: NumW]),

@@ -47,7 +47,6 @@ module scw_pipeline #(
   localparam int unsigned DispW    = Ppc * scw_pkg::DispBits,
   localparam int unsigned WW       = $clog2(MaxWidthPx + 1),
   localparam int unsigned HW       = $clog2(MaxHeight + 1),
-  localparam int unsigned NumW     = $clog2(NumDisp + 1),
   localparam int unsigned SlotW    = $clog2(RectRows),
   localparam int unsigned ObjW     = scw_pkg::ObjWordBits,
   localparam int unsigned ResW     = scw_pkg::ResultWordBits,
@@ -60,16 +59,7 @@ module scw_pipeline #(
   input  logic [HW-1:0]      cfg_height_i,
   input  logic [SlotW-1:0]   cfg_lead_i,
   // disparity (hls::disparity::DisparityConfig)
-  input  logic [WW-1:0]      cfg_dmin_i,
-  input  logic [NumW-1:0]    cfg_num_disp_i,
-  input  logic               cfg_prefilter_i,
-  input  logic [5:0]         cfg_cap_i,
-  input  logic [31:0]        cfg_sad_limit_i,
-  input  logic [31:0]        cfg_texture_i,
-  input  logic [7:0]         cfg_uniqueness_i,
-  input  logic               cfg_subpixel_i,
-  input  logic               cfg_opencv_invalid_i,
-  input  logic [NumW-1:0]    cfg_edge_i,
+  input  logic [scw_pkg::DisparityCfgBits-1:0] cfg_disparity_i,  // scw_pkg::disparity_cfg_t
   // labelling (hls::labelling::LabellingConfig; width and height are the frame's)
   input  logic [15:0]        cfg_tile_w_i,
   input  logic [15:0]        cfg_tile_h_i,
@@ -156,9 +146,7 @@ module scw_pipeline #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Window(Window),
     .NumDisp(NumDisp)
   ) u_disparity (
-    .clk_i, .rst_ni, .cfg_width_i, .cfg_height_i, .cfg_dmin_i, .cfg_num_disp_i,
-    .cfg_prefilter_i, .cfg_cap_i, .cfg_sad_limit_i, .cfg_texture_i, .cfg_uniqueness_i,
-    .cfg_subpixel_i, .cfg_opencv_invalid_i, .cfg_edge_i,
+    .clk_i, .rst_ni, .cfg_width_i, .cfg_height_i, .cfg_disparity_i,
     .l_valid_i(cl_valid), .l_ready_o(cl_ready), .l_data_i(cl_data), .l_sof_i(cl_sof),
     .l_eol_i(cl_eol),
     .r_valid_i(cr_valid), .r_ready_o(cr_ready), .r_data_i(cr_data), .r_sof_i(cr_sof),

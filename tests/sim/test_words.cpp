@@ -3,6 +3,7 @@
 // positions and unpacks to the same value, signed fields and enums included.
 #include <catch2/catch.hpp>
 
+#include "sim/words/disparity_cfg.hpp"
 #include "sim/words/labelling_pack.hpp"
 #include "sim/words/pipeline_pack.hpp"
 #include "sim/words/road_cfg.hpp"
@@ -139,4 +140,23 @@ TEST_CASE("the warning and road configuration words pack their fields at their p
   const auto rb = unpack_word<hls::road::RoadConfig>(rw, sim::road_cfg::kConfigFields);
   CHECK(rb == r);
   CHECK(rb.a_min == 0x20000);
+
+  hls::disparity::DisparityConfig d;
+  d.dmin = 2047;
+  d.num_disp = 0;    // all of a 45-candidate build: 45 on the port
+  d.sad_limit = -1;  // off: 0 on the port
+  d.texture_threshold = 0x7fffffff;
+  d.uniqueness_ratio = 15;
+  d.opencv_invalid = true;
+  d.edge_candidates = 99;  // above the candidates: all of them
+  const sim::Bits dw =
+      pack_word(sim::disparity_cfg::port_config<45>(d), sim::disparity_cfg::kConfigFields);
+  CHECK(dw.width() == 109);
+  CHECK(dw.get(0, 12) == 2047);
+  CHECK(dw.get(12, 8) == 45);
+  CHECK(dw.get(27, 32) == 0);
+  CHECK(dw.get(59, 32) == 0x7fffffff);
+  CHECK(dw.get(91, 8) == 15);
+  CHECK(dw.get(100, 1) == 1);   // opencv_invalid
+  CHECK(dw.get(101, 8) == 45);  // edge_candidates, the top field
 }

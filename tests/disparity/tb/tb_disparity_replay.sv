@@ -4,19 +4,20 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run with the set's manifest.json config as plusargs: +vectors=<set folder> +width +height
-// +dmin +num_disp +prefilter +cap +sad_limit +texture +uniqueness +subpixel +opencv_invalid
-// +edge (edge_candidates).
-// Parameters: config.ppc, max_width_px, max_height, window, num_disp (built candidates) and the
-// hex files' meta.beats (all three files of a set have frames x W * H / Ppc beats: frames back to
-// back).
+// Run with +vectors=<set folder> +width +height (the manifest's config): the rest of the stage's
+// configuration is the set's cfg.hex, one word for cfg_disparity_i (scw_pkg::disparity_cfg_t;
+// its fields in the manifest's layout).
+// Parameters: config.ppc, max_width_px, max_height, window, num_disp (built candidates), the
+// hex files' meta.beats (all three pixel files of a set have frames x W * H / Ppc beats: frames
+// back to back) and CfgW, cfg.hex's width.
 module tb_disparity_replay #(
   parameter int Ppc        = 2,
   parameter int MaxWidthPx = 128,
   parameter int MaxHeight  = 64,
   parameter int Window     = 5,
   parameter int NumDisp    = 16,
-  parameter int Beats      = 768
+  parameter int Beats      = 768,
+  parameter int CfgW       = 109   // scw_pkg::DisparityCfgBits
 );
   // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
   // k is the ready of cycles k mod 7.
@@ -25,29 +26,21 @@ module tb_disparity_replay #(
   localparam int OutW  = Ppc * 16;
   localparam int WW    = $clog2(MaxWidthPx + 1);
   localparam int HW    = $clog2(MaxHeight + 1);
-  localparam int NumW  = $clog2(NumDisp + 1);
 
   logic [BeatW+1:0] l_mem   [Beats];  // {eol, sof, px[Ppc-1..0]}
   logic [BeatW+1:0] r_mem   [Beats];
   logic [OutW+1:0]  exp_mem [Beats];
   string dir;
-  int width, height, dmin, num_disp, prefilter, cap, sad_limit, texture, uniqueness;
-  int subpixel, opencv_invalid, edge_cand;
+  int width, height;
+  logic [CfgW-1:0] cfg_mem [1];
   initial begin
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
-    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
-        !$value$plusargs("dmin=%d", dmin) || !$value$plusargs("num_disp=%d", num_disp) ||
-        !$value$plusargs("prefilter=%d", prefilter) || !$value$plusargs("cap=%d", cap) ||
-        !$value$plusargs("sad_limit=%d", sad_limit) || !$value$plusargs("texture=%d", texture) ||
-        !$value$plusargs("uniqueness=%d", uniqueness) ||
-        !$value$plusargs("subpixel=%d", subpixel) ||
-        !$value$plusargs("opencv_invalid=%d", opencv_invalid) ||
-        !$value$plusargs("edge=%d", edge_cand))
-      $fatal(1, "give the set's config: +width +height +dmin +num_disp +prefilter +cap ",
-             "+sad_limit +texture +uniqueness +subpixel +opencv_invalid +edge");
+    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height))
+      $fatal(1, "give the set's config: +width +height");
     if (Beats % (width * height / Ppc) != 0)
       $fatal(1, "%0d beats are not whole %0d x %0d frames at %0d px per beat", Beats, width,
              height, Ppc);
+    $readmemh({dir, "/cfg.hex"}, cfg_mem, 0, 0);
     $readmemh({dir, "/left.hex"}, l_mem, 0, Beats - 1);
     $readmemh({dir, "/right.hex"}, r_mem, 0, Beats - 1);
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
@@ -89,11 +82,7 @@ module tb_disparity_replay #(
     .NumDisp(NumDisp)
   ) u_dut (
     .clk_i(clk), .rst_ni(rst_n),
-    .cfg_width_i(WW'(width)), .cfg_height_i(HW'(height)), .cfg_dmin_i(WW'(dmin)),
-    .cfg_num_disp_i(NumW'(num_disp)), .cfg_prefilter_i(prefilter != 0), .cfg_cap_i(6'(cap)),
-    .cfg_sad_limit_i(sad_limit), .cfg_texture_i(texture), .cfg_uniqueness_i(8'(uniqueness)),
-    .cfg_subpixel_i(subpixel != 0), .cfg_opencv_invalid_i(opencv_invalid != 0),
-    .cfg_edge_i(NumW'(edge_cand)),
+    .cfg_width_i(WW'(width)), .cfg_height_i(HW'(height)), .cfg_disparity_i(cfg_mem[0]),
     .l_valid_i(l_valid), .l_ready_o(l_ready), .l_data_i(l_beat[BeatW-1:0]),
     .l_sof_i(l_beat[BeatW]), .l_eol_i(l_beat[BeatW+1]),
     .r_valid_i(r_valid), .r_ready_o(r_ready), .r_data_i(r_beat[BeatW-1:0]),

@@ -26,7 +26,8 @@ module tb_pipeline_replay #(
   parameter int MaxDisparityPx = 32,
   parameter int Width          = 64,  // the frames'
   parameter int Height         = 32,
-  parameter int CfgWords       = 17,  // cfg.hex: one 32-bit word per narrow cfg_* port, in order
+  parameter int CfgWords       = 7,   // cfg.hex: one 32-bit word per narrow cfg_* port, in order
+  parameter int DisparityCfgW  = 109,  // cfg_disparity.hex: cfg_disparity_i (scw_pkg::DisparityCfgBits)
   parameter int WarningCfgW    = 237,  // cfg_warning.hex: cfg_warning_i (scw_pkg::WarningCfgBits)
   parameter int RoadCfgW       = 173,  // cfg_road.hex: cfg_road_i (scw_pkg::RoadCfgBits)
   parameter int KnotBits       = 29,  // knots.hex: {right, address, knot}
@@ -47,7 +48,6 @@ module tb_pipeline_replay #(
   localparam int DispW  = Ppc * 16;
   localparam int WW     = $clog2(MaxWidthPx + 1);
   localparam int HW     = $clog2(MaxHeight + 1);
-  localparam int NumW   = $clog2(NumDisp + 1);
   localparam int SlotW  = $clog2(RectRows);
   localparam int ObjW   = ObjBits - 1;
   localparam int OutW   = ResBits - 1;
@@ -59,6 +59,7 @@ module tb_pipeline_replay #(
   logic [31:0]         cfg     [CfgWords];
   logic [WarningCfgW-1:0] cfg_warning [1];
   logic [RoadCfgW-1:0] cfg_road [1];
+  logic [DisparityCfgW-1:0] cfg_disparity [1];
   logic [KnotBits-1:0] knot    [Knots];
   logic [BeatW+1:0]    l_mem   [RawBeats];
   logic [BeatW+1:0]    r_mem   [RawBeats];
@@ -70,6 +71,7 @@ module tb_pipeline_replay #(
     $readmemh({dir, "/cfg.hex"}, cfg, 0, CfgWords - 1);
     $readmemh({dir, "/cfg_warning.hex"}, cfg_warning, 0, 0);
     $readmemh({dir, "/cfg_road.hex"}, cfg_road, 0, 0);
+    $readmemh({dir, "/cfg_disparity.hex"}, cfg_disparity, 0, 0);
     $readmemh({dir, "/knots.hex"}, knot, 0, Knots - 1);
     $readmemh({dir, "/left.hex"}, l_mem, 0, RawBeats - 1);
     $readmemh({dir, "/right.hex"}, r_mem, 0, RawBeats - 1);
@@ -124,12 +126,9 @@ module tb_pipeline_replay #(
     .clk_i(clk), .rst_ni(rst_n),
     // cfg.hex, in the order of the manifest's cfg.hex layout (the ports' order)
     .cfg_width_i(cfg[0][WW-1:0]), .cfg_height_i(cfg[1][HW-1:0]), .cfg_lead_i(cfg[2][SlotW-1:0]),
-    .cfg_dmin_i(cfg[3][WW-1:0]), .cfg_num_disp_i(cfg[4][NumW-1:0]),
-    .cfg_prefilter_i(cfg[5][0]), .cfg_cap_i(cfg[6][5:0]), .cfg_sad_limit_i(cfg[7]),
-    .cfg_texture_i(cfg[8]), .cfg_uniqueness_i(cfg[9][7:0]), .cfg_subpixel_i(cfg[10][0]),
-    .cfg_opencv_invalid_i(cfg[11][0]), .cfg_edge_i(cfg[12][NumW-1:0]),
-    .cfg_tile_w_i(cfg[13][15:0]), .cfg_tile_h_i(cfg[14][15:0]), .cfg_floor_i(cfg[15][15:0]),
-    .cfg_min_area_i(cfg[16]),
+    .cfg_disparity_i(cfg_disparity[0]),
+    .cfg_tile_w_i(cfg[3][15:0]), .cfg_tile_h_i(cfg[4][15:0]), .cfg_floor_i(cfg[5][15:0]),
+    .cfg_min_area_i(cfg[6]),
     .cfg_warning_i(cfg_warning[0]),
     .cfg_road_i(cfg_road[0]),
     .run_i(run), .knot_we_i(knot_we), .knot_right_i(knot_w[KnotBits-1]),
