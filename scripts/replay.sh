@@ -105,9 +105,9 @@ case "$stage" in
     dut_params=(MaxWidthPx=max_width_px MaxHeight=max_height MaxTilesX=max_tiles_x
                 MaxTilesY=max_tiles_y LabelsPerTile=labels_per_tile MaxObjects=max_objects)
     tb_params=(BeatsIn=beats_in WordsOut=words_out Frames=frames
-               "OutW=$(($(file_field expected.hex width_bits) - 1))")
-    plusargs=(width=width height=height tile_w=tile_w tile_h=tile_h floor=floor
-              min_area=min_area) ;;
+               "OutW=$(($(file_field expected.hex width_bits) - 1))"
+               "CfgW=$(file_field cfg.hex width_bits)")
+    plusargs=(width=width height=height) ;;
   road)
     tb=road/tb/tb_road_replay.sv top=scw_road
     rtl=("$(cd "$root/rtl_models" && echo common/*.sv road/*.sv)")
@@ -138,6 +138,7 @@ case "$stage" in
                "WarningCfgW=$(file_field cfg_warning.hex width_bits)"
                "RoadCfgW=$(file_field cfg_road.hex width_bits)"
                "DisparityCfgW=$(file_field cfg_disparity.hex width_bits)"
+               "LabellingCfgW=$(file_field cfg_labelling.hex width_bits)"
                "KnotBits=$(file_field knots.hex width_bits)" "Knots=$(file_field knots.hex beats)"
                "RawBeats=$(file_field left.hex beats)" "DispBeats=$(file_field disparity.hex beats)"
                "ObjBits=$(file_field objects.hex width_bits)"

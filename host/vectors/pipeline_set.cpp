@@ -18,6 +18,7 @@
 #include "sim/pipeline/pipeline_chain.hpp"
 #include "sim/pipeline/pipeline_top.hpp"
 #include "sim/words/disparity_cfg.hpp"
+#include "sim/words/labelling_cfg.hpp"
 #include "sim/words/pack.hpp"
 #include "sim/words/road_cfg.hpp"
 #include "sim/words/warning_cfg.hpp"
@@ -28,15 +29,13 @@ namespace {
 using json = nlohmann::json;
 using sim::Bits;
 
-// scw_pipeline's cfg_* ports of at most 32 bits in port order: cfg.hex holds one 32-bit word for
-// each, and tests/pipeline/tb/tb_pipeline_replay.sv connects them in this order; the disparity,
-// warning and road stages' words (cfg_disparity_i, cfg_warning_i, cfg_road_i) are
-// cfg_disparity.hex, cfg_warning.hex and cfg_road.hex. The values come from
-// sim::drive_pipeline_cfg, the function that configures the Verilated top.
+// scw_pipeline's frame geometry ports in port order: cfg.hex holds one 32-bit word for each, and
+// tests/pipeline/tb/tb_pipeline_replay.sv connects them in this order; each stage's configuration
+// word (cfg_disparity_i, cfg_labelling_i, cfg_road_i, cfg_warning_i) is a file of its own,
+// cfg_<stage>.hex. The values come from sim::drive_pipeline_cfg, the function that configures
+// the Verilated top.
 // clang-format off
-#define SCW_PIPELINE_CFG_PORTS(X)                                                               \
-  X(cfg_width_i) X(cfg_height_i) X(cfg_lead_i) X(cfg_tile_w_i) X(cfg_tile_h_i) X(cfg_floor_i)   \
-  X(cfg_min_area_i)
+#define SCW_PIPELINE_CFG_PORTS(X) X(cfg_width_i) X(cfg_height_i) X(cfg_lead_i)
 // clang-format on
 
 /// One port's value as drive_pipeline_cfg assigns it (its bit pattern, at most 32 bits).
@@ -64,6 +63,7 @@ struct CfgPorts {
   SCW_PIPELINE_CFG_PORTS(SCW_MEMBER)
 #undef SCW_MEMBER
   WidePort<sim::disparity_cfg::kBits> cfg_disparity_i;
+  WidePort<sim::labelling_cfg::kBits> cfg_labelling_i;
   WidePort<sim::warning_cfg::kBits> cfg_warning_i;
   WidePort<sim::road_cfg::kBits> cfg_road_i;
 };
@@ -72,7 +72,7 @@ struct CfgPorts {
 /// configuration words.
 struct CfgDrive {
   std::vector<std::pair<std::string, std::uint32_t>> ports;
-  Bits disparity, warning, road;
+  Bits disparity, labelling, warning, road;
 };
 
 template <typename Build>
@@ -86,6 +86,7 @@ CfgDrive cfg_drive(const sim::PipelineSetup& s) {
   SCW_PIPELINE_CFG_PORTS(SCW_ENTRY)
 #undef SCW_ENTRY
   d.disparity = Bits::from_port(p.cfg_disparity_i, sim::disparity_cfg::kBits);
+  d.labelling = Bits::from_port(p.cfg_labelling_i, sim::labelling_cfg::kBits);
   d.warning = Bits::from_port(p.cfg_warning_i, sim::warning_cfg::kBits);
   d.road = Bits::from_port(p.cfg_road_i, sim::road_cfg::kBits);
   return d;
@@ -264,6 +265,11 @@ PipelineSetSummary write_build(const PipelineSetOptions& o, const std::filesyste
                {"values", field_values(sim::disparity_cfg::kConfigFields,
                                        sim::words::unpack_word<hls::disparity::DisparityConfig>(
                                            cfg.disparity, sim::disparity_cfg::kConfigFields))}});
+  out.add_hex("cfg_labelling.hex", "input", {cfg.labelling},
+              {{"fields", field_layout(sim::labelling_cfg::kConfigFields)},
+               {"values", field_values(sim::labelling_cfg::kConfigFields,
+                                       sim::words::unpack_word<hls::labelling::LabellingConfig>(
+                                           cfg.labelling, sim::labelling_cfg::kConfigFields))}});
   using sim::warning_cfg::kConfigFields;
   out.add_hex(
       "cfg_warning.hex", "input", {cfg.warning},

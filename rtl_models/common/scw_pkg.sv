@@ -189,4 +189,22 @@ package scw_pkg;
     logic [DispNumBits-1:0]   num_disp;
     logic [DispDminBits-1:0]  dmin;
   } disparity_cfg_t;
+  // The labelling stage's configuration (hls::labelling::LabellingConfig but the frame's width
+  // and height, the top's cfg_width_i and cfg_height_i), one word on the cfg_labelling_i port of
+  // scw_labelling and of the top: the layout here and in sim/words/labelling_cfg.hpp's
+  // kConfigFields. The tile sizes saturate at 65535 (such a tile never closes inside a frame),
+  // the floor is Q11.4 two's complement, min_area a pixel count.
+  localparam int unsigned LabTileBits    /*verilator public*/ = 16;
+  localparam int unsigned LabFloorBits   /*verilator public*/ = 16;
+  localparam int unsigned LabMinAreaBits /*verilator public*/ = 32;
+  // labelling_cfg_t's width (scw_labelling checks the two agree at elaboration).
+  localparam int unsigned LabellingCfgBits /*verilator public*/ =
+      2 * LabTileBits + LabFloorBits + LabMinAreaBits;
+  // Most significant first: tile_w the lowest bits, min_area the highest.
+  typedef struct packed {
+    logic [LabMinAreaBits-1:0] min_area;
+    logic [LabFloorBits-1:0]   floor;
+    logic [LabTileBits-1:0]    tile_h;
+    logic [LabTileBits-1:0]    tile_w;
+  } labelling_cfg_t;
 endpackage

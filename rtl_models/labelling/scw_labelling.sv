@@ -20,7 +20,7 @@
 //            nodes, so the parent's root is already known) and its descriptor into the root's;
 //            the sweep copies each lane's label count for Emit. Then the next frame may start
 // Emit runs alongside the next frame (it reads only the root and sum RAMs, which the next
-// frame's Resolve waits for): every used node again (E0, E1); roots of at least cfg_min_area_i
+// frame's Resolve waits for): every used node again (E0, E1); roots of at least min_area
 // pixels leave as objects, up to MaxObjects; then the status word with out_last_o.
 // Every RAM is a scw_ram_sdp with a registered read (read-first: a read in the clock of a write
 // to the same address returns the old word); where the model's next stage needs that word it
@@ -43,10 +43,7 @@ module scw_labelling #(
   // static configuration (hls::labelling::LabellingConfig)
   input  logic [15:0]     cfg_width_i,
   input  logic [15:0]     cfg_height_i,
-  input  logic [15:0]     cfg_tile_w_i,
-  input  logic [15:0]     cfg_tile_h_i,
-  input  logic [15:0]     cfg_floor_i,
-  input  logic [31:0]     cfg_min_area_i,
+  input  logic [scw_pkg::LabellingCfgBits-1:0] cfg_labelling_i,  // scw_pkg::labelling_cfg_t
   // disparities, Q11.4
   input  logic            in_valid_i,
   output logic            in_ready_o,
@@ -156,6 +153,12 @@ module scw_labelling #(
   if (!(Lanes == 1 || Lanes == 2 || Lanes == 4) || MaxTilesX % Lanes != 0 ||
       MaxWidthPx % Lanes != 0) begin : gen_bad_lanes
     $error("scw_labelling: 1, 2 or 4 lanes, over which the tile columns and width split evenly");
+  end
+
+  scw_pkg::labelling_cfg_t cfg;
+  assign cfg = cfg_labelling_i;
+  if ($bits(cfg) != scw_pkg::LabellingCfgBits) begin : gen_bad_cfg
+    $error("scw_labelling: scw_pkg::LabellingCfgBits is not labelling_cfg_t's width");
   end
 
   // Descriptors (hls::labelling::Object) are scw_pkg::label_desc_t.
@@ -483,9 +486,9 @@ module scw_labelling #(
     ) u_lane (
       .clk_i,
       .rst_ni,
-      .cfg_tile_w_i,
-      .cfg_tile_h_i,
-      .cfg_floor_i,
+      .cfg_tile_w_i (cfg.tile_w),
+      .cfg_tile_h_i (cfg.tile_h),
+      .cfg_floor_i  (cfg.floor),
       .x0_i         (lane_x0[i*16 +: 16]),
       .width_i      (lane_width[i*16 +: 16]),
       .en_i         (ph_pixels),
@@ -773,13 +776,13 @@ module scw_labelling #(
         strip_q     <= '0;
         x0_q        <= '0;
       end else if (ph_init && measure_q < {1'b0, cfg_width_i}) begin
-        measure_q   <= measure_q + {1'b0, cfg_tile_w_i};
+        measure_q   <= measure_q + {1'b0, cfg.tile_w};
         measure_k_q <= measure_k_q + 1'b1;
         if (measure_k_q == LaneSW'(Lanes - 1)) begin
-          strip_q <= strip_q + cfg_tile_w_i;
+          strip_q <= strip_q + cfg.tile_w;
           for (int i = 1; i < Lanes; i++) begin  // i x tile_w as shifts (i < 4)
-            x0_q[i*16 +: 16] <= x0_q[i*16 +: 16] + ((i % 2 == 1) ? cfg_tile_w_i : 16'd0) +
-                                ((i / 2 % 2 == 1) ? {cfg_tile_w_i[14:0], 1'b0} : 16'd0);
+            x0_q[i*16 +: 16] <= x0_q[i*16 +: 16] + ((i % 2 == 1) ? cfg.tile_w : 16'd0) +
+                                ((i / 2 % 2 == 1) ? {cfg.tile_w[14:0], 1'b0} : 16'd0);
           end
         end
       end
@@ -1086,14 +1089,14 @@ module scw_labelling #(
   assign acc_raddr  = ph_resolve ? r2_root : sw_node;
   assign acc_we     = ph_resolve && r5_valid_q;
 
-  // Roots and big flags (the root's area reached cfg_min_area_i, written with each sum, so the
+  // Roots and big flags (the root's area reached cfg.min_area, written with each sum, so the
   // last write, the root's whole area, decides) in distributed RAM: Resolve's next read address
   // and Emit's decision follow from their words a clock after the read.
   (* ram_style = "distributed" *) logic [NodeW-1:0] root_mem_q [NodeSpace];
   (* ram_style = "distributed" *) logic big_mem_q [NodeSpace];
   always_ff @(posedge clk_i) begin
     if (root_we) root_mem_q[r2_node_q] <= r2_root;
-    if (acc_we) big_mem_q[r5_root_q] <= 32'(res_q[AreaW-1:0]) >= cfg_min_area_i;
+    if (acc_we) big_mem_q[r5_root_q] <= 32'(res_q[AreaW-1:0]) >= cfg.min_area;
   end
   always_ff @(posedge clk_i) begin
     if (root_re) root_rd <= root_mem_q[root_raddr];

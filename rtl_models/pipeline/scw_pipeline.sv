@@ -61,10 +61,7 @@ module scw_pipeline #(
   // disparity (hls::disparity::DisparityConfig)
   input  logic [scw_pkg::DisparityCfgBits-1:0] cfg_disparity_i,  // scw_pkg::disparity_cfg_t
   // labelling (hls::labelling::LabellingConfig; width and height are the frame's)
-  input  logic [15:0]        cfg_tile_w_i,
-  input  logic [15:0]        cfg_tile_h_i,
-  input  logic [15:0]        cfg_floor_i,
-  input  logic [31:0]        cfg_min_area_i,
+  input  logic [scw_pkg::LabellingCfgBits-1:0] cfg_labelling_i,  // scw_pkg::labelling_cfg_t
   // warning (hls::warning::WarningConfig): scw_pkg::warning_cfg_t
   input  logic [scw_pkg::WarningCfgBits-1:0] cfg_warning_i,
   // road (hls::road::RoadConfig): scw_pkg::road_cfg_t
@@ -214,7 +211,7 @@ module scw_pipeline #(
   ) u_labelling (
     .clk_i, .rst_ni,
     .cfg_width_i(16'(cfg_width_i)), .cfg_height_i(16'(cfg_height_i)),
-    .cfg_tile_w_i, .cfg_tile_h_i, .cfg_floor_i, .cfg_min_area_i,
+    .cfg_labelling_i,
     .in_valid_i(rq_valid), .in_ready_o(rq_ready), .in_data_i(rq_word[DispW-1:0]),
     .in_sof_i(rq_word[DispW]), .in_eol_i(rq_word[DispW+1]),
     .out_valid_o(o_valid), .out_ready_i(o_ready), .out_data_o(o_data), .out_last_o(o_last),

@@ -71,6 +71,7 @@ static_assert(Vpipe_p1_top_scw_pkg::ResultWordBits ==
 static_assert(Vpipe_p1_top_scw_pkg::WarningCfgBits == warning_cfg::kBits);
 static_assert(Vpipe_p1_top_scw_pkg::RoadCfgBits == road_cfg::kBits);
 static_assert(Vpipe_p1_top_scw_pkg::DisparityCfgBits == disparity_cfg::kBits);
+static_assert(Vpipe_p1_top_scw_pkg::LabellingCfgBits == labelling_cfg::kBits);
 static_assert(Vpipe_p1_top_scw_pkg::PipeResultBits ==
               BeatLayout<hls::pipeline::PipelineResultPacket>::kPayloadBits);
 static_assert(Vpipe_p1_top_scw_pkg::DispBits == 8 * sizeof(hls::road::disp_t));

@@ -3,11 +3,11 @@
 // compile-time check that it was built with the C++ parameters.
 #pragma once
 
-#include <algorithm>
 #include <string>
 
 #include "hls/labelling/labelling.hpp"
 #include "sim/rtl/rtl_stream.hpp"
+#include "sim/words/labelling_cfg.hpp"
 #include "sim/words/labelling_pack.hpp"
 
 namespace scw::sim {
@@ -42,20 +42,18 @@ constexpr bool labelling_params_match() {
 template <typename VM, typename Params>
 using LabellingRtl = RtlStream<VM, typename Params::in_beat, hls::labelling::LabelPacket>;
 
-/// Sets the cfg_* ports (scw_labelling, or a top that passes them on).
+/// Sets the frame's size and the configuration word cfg_labelling_i (scw_labelling, or a top that
+/// passes them on), the word packed by its one field table (labelling_cfg::port_config).
 template <typename VM>
 void drive_labelling_cfg(VM& m, const hls::labelling::LabellingConfig& cfg) {
   m.cfg_width_i = static_cast<unsigned>(cfg.width);
   m.cfg_height_i = static_cast<unsigned>(cfg.height);
-  m.cfg_tile_w_i = static_cast<unsigned>(std::min(cfg.tile_w, 65535));
-  m.cfg_tile_h_i = static_cast<unsigned>(std::min(cfg.tile_h, 65535));
-  m.cfg_floor_i = static_cast<unsigned>(cfg.floor);
-  m.cfg_min_area_i = static_cast<unsigned>(cfg.min_area);
+  words::pack_word(labelling_cfg::port_config(cfg), labelling_cfg::kConfigFields)
+      .to_port(m.cfg_labelling_i);
 }
 
-/// Checks `cfg` as the model does (std::invalid_argument) and drives the cfg_* ports from it
-/// before reset. A tile wider or taller than 65535 never closes inside a frame, nor does one of
-/// 65535 (its last column or row is the image's), so the 16-bit tile ports saturate.
+/// Checks `cfg` as the model does (std::invalid_argument) and drives the configuration from it
+/// before reset.
 template <typename VM, typename Params>
 LabellingRtl<VM, Params> make_labelling_rtl(const std::string& name,
                                             const hls::labelling::LabellingConfig& cfg) {

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "sim/words/disparity_cfg.hpp"
+#include "sim/words/labelling_cfg.hpp"
 #include "sim/words/labelling_pack.hpp"
 #include "sim/words/pipeline_pack.hpp"
 #include "sim/words/road_cfg.hpp"
@@ -159,4 +160,19 @@ TEST_CASE("the warning and road configuration words pack their fields at their p
   CHECK(dw.get(91, 8) == 15);
   CHECK(dw.get(100, 1) == 1);   // opencv_invalid
   CHECK(dw.get(101, 8) == 45);  // edge_candidates, the top field
+
+  hls::labelling::LabellingConfig l;
+  l.tile_w = 70000;  // wider than 16 bits: saturates (such a tile never closes in a frame)
+  l.tile_h = 13;
+  l.floor = -16;  // an invalid code below 0: two's complement
+  l.min_area = 123456;
+  const sim::Bits lw =
+      pack_word(sim::labelling_cfg::port_config(l), sim::labelling_cfg::kConfigFields);
+  CHECK(lw.width() == 80);
+  CHECK(lw.get(0, 16) == 0xffff);
+  CHECK(lw.get(16, 16) == 13);
+  CHECK(lw.get(32, 16) == 0xfff0);
+  CHECK(lw.get(48, 32) == 123456);  // min_area, the top field
+  CHECK(unpack_word<hls::labelling::LabellingConfig>(lw, sim::labelling_cfg::kConfigFields).floor ==
+        -16);
 }

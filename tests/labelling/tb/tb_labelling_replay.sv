@@ -4,9 +4,11 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run with the set's manifest.json config as plusargs: +vectors=<set folder> +width +height
-// +tile_w +tile_h +floor +min_area. Parameters: config.max_width_px, max_height, max_tiles_x,
-// max_tiles_y, labels_per_tile, max_objects (the build), beats_in, words_out and frames.
+// Run with +vectors=<set folder> +width +height (the manifest's config): the rest of the stage's
+// configuration is the set's cfg.hex, one word for cfg_labelling_i (scw_pkg::labelling_cfg_t;
+// its fields in the manifest's layout). Parameters: config.max_width_px, max_height,
+// max_tiles_x, max_tiles_y, labels_per_tile, max_objects (the build), beats_in, words_out and
+// frames, the words' widths.
 // +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
 // another).
 module tb_labelling_replay #(
@@ -21,7 +23,8 @@ module tb_labelling_replay #(
   parameter int Frames        = 1,
   // The object word's width: the manifest's expected.hex width_bits less the last bit (897 at
   // scw_pkg's widths).
-  parameter int OutW          = 897
+  parameter int OutW          = 897,
+  parameter int CfgW          = 80   // cfg.hex's width_bits: scw_pkg::LabellingCfgBits
 );
   // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
   // k is the ready of cycles k mod 7.
@@ -35,14 +38,14 @@ module tb_labelling_replay #(
   logic [17:0]   in_mem  [BeatsIn];   // {eol, sof, d[15:0]}
   logic [OutW:0] exp_mem [WordsOut];  // {last, data[OutW-1:0]}
   string dir;
-  int width, height, tile_w, tile_h, floor_q4, min_area, stalls = 1;
+  int width, height, stalls = 1;
+  logic [CfgW-1:0] cfg_mem [1];
   initial begin
     if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
-    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
-        !$value$plusargs("tile_w=%d", tile_w) || !$value$plusargs("tile_h=%d", tile_h) ||
-        !$value$plusargs("floor=%d", floor_q4) || !$value$plusargs("min_area=%d", min_area))
-      $fatal(1, "give the set's config: +width +height +tile_w +tile_h +floor +min_area");
+    if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height))
+      $fatal(1, "give the set's config: +width +height");
+    $readmemh({dir, "/cfg.hex"}, cfg_mem, 0, 0);
     if (width * height * Frames != BeatsIn)
       $fatal(1, "%0d frames of %0d x %0d are not %0d beats", Frames, width, height, BeatsIn);
     $readmemh({dir, "/in.hex"}, in_mem, 0, BeatsIn - 1);
@@ -80,8 +83,7 @@ module tb_labelling_replay #(
     .MaxTilesY(MaxTilesY), .LabelsPerTile(LabelsPerTile), .MaxObjects(MaxObjects)
   ) u_dut (
     .clk_i(clk), .rst_ni(rst_n),
-    .cfg_width_i(16'(width)), .cfg_height_i(16'(height)), .cfg_tile_w_i(16'(tile_w)),
-    .cfg_tile_h_i(16'(tile_h)), .cfg_floor_i(16'(floor_q4)), .cfg_min_area_i(min_area),
+    .cfg_width_i(16'(width)), .cfg_height_i(16'(height)), .cfg_labelling_i(cfg_mem[0]),
     .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_beat[15:0]),
     .in_sof_i(in_beat[16]), .in_eol_i(in_beat[17]),
     .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),

@@ -26,7 +26,8 @@ module tb_pipeline_replay #(
   parameter int MaxDisparityPx = 32,
   parameter int Width          = 64,  // the frames'
   parameter int Height         = 32,
-  parameter int CfgWords       = 7,   // cfg.hex: one 32-bit word per narrow cfg_* port, in order
+  parameter int CfgWords       = 3,   // cfg.hex: width, height, lead (32-bit words, port order)
+  parameter int LabellingCfgW  = 80,  // cfg_labelling.hex: cfg_labelling_i (scw_pkg::LabellingCfgBits)
   parameter int DisparityCfgW  = 109,  // cfg_disparity.hex: cfg_disparity_i (scw_pkg::DisparityCfgBits)
   parameter int WarningCfgW    = 237,  // cfg_warning.hex: cfg_warning_i (scw_pkg::WarningCfgBits)
   parameter int RoadCfgW       = 173,  // cfg_road.hex: cfg_road_i (scw_pkg::RoadCfgBits)
@@ -60,6 +61,7 @@ module tb_pipeline_replay #(
   logic [WarningCfgW-1:0] cfg_warning [1];
   logic [RoadCfgW-1:0] cfg_road [1];
   logic [DisparityCfgW-1:0] cfg_disparity [1];
+  logic [LabellingCfgW-1:0] cfg_labelling [1];
   logic [KnotBits-1:0] knot    [Knots];
   logic [BeatW+1:0]    l_mem   [RawBeats];
   logic [BeatW+1:0]    r_mem   [RawBeats];
@@ -72,6 +74,7 @@ module tb_pipeline_replay #(
     $readmemh({dir, "/cfg_warning.hex"}, cfg_warning, 0, 0);
     $readmemh({dir, "/cfg_road.hex"}, cfg_road, 0, 0);
     $readmemh({dir, "/cfg_disparity.hex"}, cfg_disparity, 0, 0);
+    $readmemh({dir, "/cfg_labelling.hex"}, cfg_labelling, 0, 0);
     $readmemh({dir, "/knots.hex"}, knot, 0, Knots - 1);
     $readmemh({dir, "/left.hex"}, l_mem, 0, RawBeats - 1);
     $readmemh({dir, "/right.hex"}, r_mem, 0, RawBeats - 1);
@@ -124,11 +127,11 @@ module tb_pipeline_replay #(
     .MaxDisparityPx(MaxDisparityPx)
   ) u_dut (
     .clk_i(clk), .rst_ni(rst_n),
-    // cfg.hex, in the order of the manifest's cfg.hex layout (the ports' order)
+    // cfg.hex, in the order of the manifest's cfg.hex layout (the ports' order), and each
+    // stage's configuration word
     .cfg_width_i(cfg[0][WW-1:0]), .cfg_height_i(cfg[1][HW-1:0]), .cfg_lead_i(cfg[2][SlotW-1:0]),
     .cfg_disparity_i(cfg_disparity[0]),
-    .cfg_tile_w_i(cfg[3][15:0]), .cfg_tile_h_i(cfg[4][15:0]), .cfg_floor_i(cfg[5][15:0]),
-    .cfg_min_area_i(cfg[6]),
+    .cfg_labelling_i(cfg_labelling[0]),
     .cfg_warning_i(cfg_warning[0]),
     .cfg_road_i(cfg_road[0]),
     .run_i(run), .knot_we_i(knot_we), .knot_right_i(knot_w[KnotBits-1]),
