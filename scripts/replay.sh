@@ -52,12 +52,13 @@ set_dir="$(cd "$set_dir" && pwd)"
 manifest="$set_dir/manifest.json"
 
 # A value of the manifest's config block by key: an integer (possibly negative) or a boolean
-# (true/false -> 1/0). The config comes before the file table, so the first match is the
-# config's even for keys the file entries repeat (width, height, beats).
+# (true/false -> 1/0). Only the text before the file table is read, so a key the config lacks
+# is refused rather than taken from a file's entry (width, height, beats; a file's own numbers
+# are file_field's).
 field() {
   local v
-  v="$(grep -o "\"$1\": *[-a-z0-9]*" "$manifest" | head -1 | sed 's/.*: *//' |
-    sed 's/^true$/1/; s/^false$/0/')"
+  v="$(sed '/"files": *\[/q' "$manifest" | grep -o "\"$1\": *[-a-z0-9]*" | head -1 |
+    sed 's/.*: *//' | sed 's/^true$/1/; s/^false$/0/')"
   [[ "$v" =~ ^-?[0-9]+$ ]] || { echo "replay.sh: no number '$1' in $manifest" >&2; exit 2; }
   echo "$v"
 }
@@ -83,13 +84,13 @@ case "$stage" in
     tb=common/tb/tb_line_buffer_replay.sv top=scw_line_buffer
     rtl=(common/scw_ram_sdp.sv common/scw_line_buffer.sv)
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px Rows=rows)
-    tb_params=(Beats=beats) ;;
+    tb_params=("Beats=$(file_field input.hex beats)") ;;
   rectify)
     tb=rectify/tb/tb_rectify_replay.sv top=scw_rectify
     rtl=(common/scw_ram_sdp.sv rectify/scw_rectify.sv)
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height Rows=rows
                 FracBits=frac_bits)
-    tb_params=(CoordBits=coord_bits Beats=beats)
+    tb_params=(CoordBits=coord_bits "Beats=$(file_field input.hex beats)")
     plusargs=(width=width height=height lead=lead_rows) ;;
   disparity)
     tb=disparity/tb/tb_disparity_replay.sv top=scw_disparity
