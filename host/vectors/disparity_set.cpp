@@ -151,8 +151,8 @@ void write_files(const std::filesystem::path& dir, const DisparityFrame& f,
   VectorWriter vw(dir, "disparity", config, f.description);
   // The configuration word the testbench puts on cfg_disparity_i: what the build reads of the
   // config (disparity_cfg::port_config), its fields in the layout.
-  vw.add_hex("cfg.hex", "input", {cfg_word},
-             {{"fields", field_layout(sim::disparity_cfg::kConfigFields)}});
+  add_config_hex<DisparityConfig>(vw, "cfg.hex", cfg_word, sim::disparity_cfg::kConfigFields,
+                                  false);
   vw.add_image("left.png", "input", stacked(f.left));
   vw.add_image("right.png", "input", stacked(f.right));
   vw.add_hex("left.hex", "input", sim::pack_all(l), pixel_beat_layout(kPpc, 8));

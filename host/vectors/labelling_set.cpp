@@ -410,10 +410,10 @@ void write_files(const std::filesystem::path& dir, const Preset& p, const nlohma
   const auto out_words = sim::pack_all(words);
   VectorWriter vw(dir, "labelling", config, p.description);
   // The configuration word the testbench puts on cfg_labelling_i (its values in the config).
-  vw.add_hex("cfg.hex", "input",
-             {sim::words::pack_word(sim::labelling_cfg::port_config(p.cfg),
-                                    sim::labelling_cfg::kConfigFields)},
-             {{"fields", field_layout(sim::labelling_cfg::kConfigFields)}});
+  add_config_hex<LabellingConfig>(vw, "cfg.hex",
+                                  sim::words::pack_word(sim::labelling_cfg::port_config(p.cfg),
+                                                        sim::labelling_cfg::kConfigFields),
+                                  sim::labelling_cfg::kConfigFields, false);
   vw.add_hex("in.hex", "input", in_words, pixel_beat_layout(1, 16));
   vw.add_image("in.png", "input", stacked(images));
   vw.add_hex("expected.hex", "expected", out_words, labelling_word_layout());

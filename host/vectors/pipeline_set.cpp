@@ -260,27 +260,14 @@ PipelineSetSummary write_build(const PipelineSetOptions& o, const std::filesyste
     lines.push_back({{"name", port}, {"value", value}});
   }
   out.add_hex("cfg.hex", "input", cfg_bits, {{"lines", lines}});
-  out.add_hex("cfg_disparity.hex", "input", {cfg.disparity},
-              {{"fields", field_layout(sim::disparity_cfg::kConfigFields)},
-               {"values", field_values(sim::disparity_cfg::kConfigFields,
-                                       sim::words::unpack_word<hls::disparity::DisparityConfig>(
-                                           cfg.disparity, sim::disparity_cfg::kConfigFields))}});
-  out.add_hex("cfg_labelling.hex", "input", {cfg.labelling},
-              {{"fields", field_layout(sim::labelling_cfg::kConfigFields)},
-               {"values", field_values(sim::labelling_cfg::kConfigFields,
-                                       sim::words::unpack_word<hls::labelling::LabellingConfig>(
-                                           cfg.labelling, sim::labelling_cfg::kConfigFields))}});
-  using sim::warning_cfg::kConfigFields;
-  out.add_hex(
-      "cfg_warning.hex", "input", {cfg.warning},
-      {{"fields", field_layout(kConfigFields)},
-       {"values", field_values(kConfigFields, sim::words::unpack_word<hls::warning::WarningConfig>(
-                                                  cfg.warning, kConfigFields))}});
-  out.add_hex("cfg_road.hex", "input", {cfg.road},
-              {{"fields", field_layout(sim::road_cfg::kConfigFields)},
-               {"values", field_values(sim::road_cfg::kConfigFields,
-                                       sim::words::unpack_word<hls::road::RoadConfig>(
-                                           cfg.road, sim::road_cfg::kConfigFields))}});
+  add_config_hex<hls::disparity::DisparityConfig>(out, "cfg_disparity.hex", cfg.disparity,
+                                                  sim::disparity_cfg::kConfigFields, true);
+  add_config_hex<hls::labelling::LabellingConfig>(out, "cfg_labelling.hex", cfg.labelling,
+                                                  sim::labelling_cfg::kConfigFields, true);
+  add_config_hex<hls::warning::WarningConfig>(out, "cfg_warning.hex", cfg.warning,
+                                              sim::warning_cfg::kConfigFields, true);
+  add_config_hex<hls::road::RoadConfig>(out, "cfg_road.hex", cfg.road, sim::road_cfg::kConfigFields,
+                                        true);
   using G = typename Build::map_grid;
   out.add_hex(
       "knots.hex", "input", knot_words<G>(setup),

@@ -467,8 +467,8 @@ RoadSetSummary write_set(const RoadSequence& seq, const std::filesystem::path& d
 
   VectorWriter vw(dir, "road", config, seq.description);
   // The configuration word the testbench puts on cfg_road_i.
-  vw.add_hex("cfg.hex", "input", {sim::words::pack_word(c, sim::road_cfg::kConfigFields)},
-             {{"fields", field_layout(sim::road_cfg::kConfigFields)}});
+  add_config_hex<RoadConfig>(vw, "cfg.hex", sim::words::pack_word(c, sim::road_cfg::kConfigFields),
+                             sim::road_cfg::kConfigFields, false);
   vw.add_hex("in.hex", "input", in_words, disparity_layout(Params::kPpc));
   vw.add_image("in.png", "input", stacked(in_images));
   vw.add_hex("expected.hex", "expected", out_words, disparity_layout(Params::kPpc));

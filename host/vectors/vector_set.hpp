@@ -137,6 +137,17 @@ class VectorWriter {
   bool finished_ = false;
 };
 
+/// A stage's configuration word (sim/words/*_cfg.hpp) as a one-line input file `name`, its layout
+/// the table's fields and, with `with_values`, their values read back from the word (sets whose
+/// config already lists them leave that out).
+template <typename S, typename Table>
+void add_config_hex(VectorWriter& vw, const std::string& name, const sim::Bits& word,
+                    const Table& table, bool with_values) {
+  nlohmann::json layout = {{"fields", field_layout(table)}};
+  if (with_values) layout["values"] = field_values(table, sim::words::unpack_word<S>(word, table));
+  vw.add_hex(name, "input", {word}, layout);
+}
+
 /// A CSV file of the user's, in the sets' dialect (a header row, comma-separated unquoted values,
 /// '\n' line endings; blank lines skipped).
 struct CsvTable {

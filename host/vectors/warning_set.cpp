@@ -453,8 +453,9 @@ void write_files(const std::filesystem::path& dir, const WarningPreset& p,
   const auto out_bits = sim::pack_all(out);
   VectorWriter vw(dir, "warning", config, p.description);
   // The configuration word the testbench puts on cfg_warning_i (its values in config.cfg).
-  vw.add_hex("cfg.hex", "input", {sim::words::pack_word(cfg, sim::warning_cfg::kConfigFields)},
-             {{"fields", field_layout(sim::warning_cfg::kConfigFields)}});
+  add_config_hex<WarningConfig>(vw, "cfg.hex",
+                                sim::words::pack_word(cfg, sim::warning_cfg::kConfigFields),
+                                sim::warning_cfg::kConfigFields, false);
   vw.add_hex("in.hex", "input", in_bits, labelling_word_layout());
   vw.add_csv("in_words.csv", "input",
              {"frame", "word", "last", "is_status", "x_min", "x_max", "y_min", "y_max", "d_max",
