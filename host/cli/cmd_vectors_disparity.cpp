@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
-#include "host/cli/shard_option.hpp"
+#include "host/cli/set_options.hpp"
 #include "host/vectors/disparity_set.hpp"
 #include "host/vectors/vector_set.hpp"
 
@@ -61,13 +61,9 @@ void add_vectors_disparity_command(CLI::App& vectors) {
   cmd->add_option("--dmin", o->pair.dmin, "With --left/--right: the first of the 16 candidates");
   cmd->add_option("--edge-candidates", o->pair.edge_candidates,
                   "With --left/--right: decide the left edge band from K candidates (0: blind)");
-  cmd->add_option("--frames", o->frames,
-                  "K frames back to back: the first K of your inputs (or the preset's), or all "
-                  "of them in order, repeated up to K")
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option("--out", o->out, "Vector set directory to write")->required();
+  add_set_frames_option(cmd, o->frames);
+  add_set_out_options(cmd, o->out);
   cmd->add_option("--data-dir", o->data_dir, "Folder with the Tsukuba PPMs");
-  add_refused_shard_option(cmd, kVectorsNoShard);
   cmd->callback([o] {
     if (o->preset.empty() && o->pair.left.empty())
       throw CLI::ValidationError("give --preset NAME, or your pair with --left L --right R");

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
-#include "host/cli/shard_option.hpp"
+#include "host/cli/set_options.hpp"
 #include "host/vectors/labelling_set.hpp"
 #include "host/vectors/vector_set.hpp"
 
@@ -49,13 +49,9 @@ void add_vectors_labelling_command(CLI::App& vectors) {
       ->check(CLI::IsMember(vec::labelling_builds()));
   cmd->add_option("--floor", o->map.floor, "With --disparity: the lowest valid value (Q11.4)");
   cmd->add_option("--min-area", o->map.min_area, "With --disparity: the smallest object");
-  cmd->add_option("--frames", o->frames,
-                  "K frames back to back: the first K of your inputs (or the preset's), or all "
-                  "of them in order, repeated up to K")
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option("--out", o->out, "Vector set directory to write")->required();
+  add_set_frames_option(cmd, o->frames);
+  add_set_out_options(cmd, o->out);
   cmd->add_option("--data-dir", o->data_dir, "Folder with truedisp.row3.col3.pgm");
-  add_refused_shard_option(cmd, kVectorsNoShard);
   cmd->callback([o] {
     if (o->preset.empty() && o->map.disparity.empty())
       throw CLI::ValidationError("give --preset NAME, or your maps with --disparity FILE ...");

@@ -8,7 +8,7 @@
 
 #include "host/app/pair_files.hpp"
 #include "host/cli/commands.hpp"
-#include "host/cli/shard_option.hpp"
+#include "host/cli/set_options.hpp"
 #include "host/io/image_file.hpp"
 #include "host/vectors/pipeline_set.hpp"
 
@@ -61,8 +61,7 @@ void add_vectors_pipeline_command(CLI::App& vectors) {
                   "rtl: also run the Verilated top and require its results and object table "
                   "to equal the C++ chain's; cpp: the C++ chain only")
       ->check(CLI::IsMember({"cpp", "rtl"}));
-  cmd->add_option("--out", o->out, "Vector set directory to write")->required();
-  add_refused_shard_option(cmd, kVectorsNoShard);
+  add_set_out_options(cmd, o->out);
   cmd->callback([o, frames] {
     vec::PipelineSetOptions s = o->set;
     s.height = s.width / 2;

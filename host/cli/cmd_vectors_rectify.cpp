@@ -9,7 +9,7 @@
 #include "Vcli_rectify_p2.h"
 #include "Vcli_rectify_p2_scw_rectify.h"
 #include "host/cli/commands.hpp"
-#include "host/cli/shard_option.hpp"
+#include "host/cli/set_options.hpp"
 #include "host/vectors/rectify_set.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/core/join.hpp"
@@ -95,11 +95,8 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                   "--engine cpp). The chessboard presets then take the whole image unless --roi "
                   "and --size pick a band: this calibration's whole image needs 81 raw rows")
       ->check(CLI::IsMember(vec::rectify_builds()));
-  cmd->add_option("--frames", o->frames,
-                  "K frames back to back: the first K of your inputs (or the preset's), or all "
-                  "of them in order, repeated up to K")
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option("--out", o->out, "Vector set directory to write")->required();
+  add_set_frames_option(cmd, o->frames);
+  add_set_out_options(cmd, o->out);
   cmd->add_option("--data-dir", o->data_dir,
                   "Folder with left01.jpg, right01.jpg and derived_stereo_calibration_helper.yml");
   cmd->add_option("--roi", o->roi,
@@ -109,7 +106,6 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                   "Chessboard or your pair: W H of the rectified ROI (default 128 96; --config "
                   "thesis: the whole image from 0 0)")
       ->expected(2);
-  add_refused_shard_option(cmd, kVectorsNoShard);
   cmd->callback([o] {
     if (o->preset.empty() && o->pair.left.empty())
       throw CLI::ValidationError(

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
-#include "host/cli/shard_option.hpp"
+#include "host/cli/set_options.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/vectors/road_set.hpp"
 #include "host/vectors/vector_set.hpp"
@@ -68,12 +68,8 @@ void add_vectors_road_command(CLI::App& vectors) {
       ->check(CLI::IsMember(vec::road_builds()));
   cmd->add_option("--ppc", m.ppc, "With --config small, tsukuba or thesis: pixels a beat")
       ->check(CLI::IsMember({1, 2, 4}));
-  cmd->add_option("--frames", o->frames,
-                  "K frames back to back: the first K of your inputs (or the preset's), or all "
-                  "of them in order, repeated up to K")
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option("--out", o->out, "Vector set directory to write")->required();
-  add_refused_shard_option(cmd, kVectorsNoShard);
+  add_set_frames_option(cmd, o->frames);
+  add_set_out_options(cmd, o->out);
   cmd->callback([o] {
     if (o->preset.empty() && o->maps.disparity.empty())
       throw CLI::ValidationError("give --preset NAME, or your maps with --disparity FILE ...");

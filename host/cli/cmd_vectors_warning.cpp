@@ -6,7 +6,7 @@
 #include <string>
 
 #include "host/cli/commands.hpp"
-#include "host/cli/shard_option.hpp"
+#include "host/cli/set_options.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "host/vectors/warning_set.hpp"
@@ -69,12 +69,8 @@ void add_vectors_warning_command(CLI::App& vectors) {
                   "With --objects: the build: vectors (a reciprocal table below 128 px; the "
                   "committed sets), or the pipeline's small, tsukuba (32 px) or thesis (128 px)")
       ->check(CLI::IsMember(vec::warning_builds()));
-  cmd->add_option("--frames", o->frames,
-                  "K frames back to back: the first K of your inputs (or the preset's), or all "
-                  "of them in order, repeated up to K")
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option("--out", o->out, "Vector set directory to write")->required();
-  add_refused_shard_option(cmd, kVectorsNoShard);
+  add_set_frames_option(cmd, o->frames);
+  add_set_out_options(cmd, o->out);
   cmd->callback([o] {
     if (o->preset.empty() && o->user.objects.empty())
       throw CLI::ValidationError("give --preset NAME, or your tables with --objects FILE.csv");
