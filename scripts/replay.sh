@@ -152,7 +152,8 @@ case "$stage" in
     exit 2 ;;
 esac
 tb_module="$(basename "$tb" .sv)"
-tb_files=("$root/tests/$tb")
+# Every testbench instantiates the shared clock and sources (tests/common/tb/tb_replay_kit.sv).
+tb_files=("$root/tests/$tb" "$root/tests/common/tb/tb_replay_kit.sv")
 for f in "${tb_extra[@]}"; do tb_files+=("$root/tests/$f"); done
 read -r -a rtl <<< "${rtl[*]}"  # the globs above expand to one word each
 sources=("$root/rtl_models/common/scw_pkg.sv")

@@ -26,23 +26,17 @@ module tb_line_buffer_replay #(
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
   end
 
-  logic clk = 1'b0, rst_n = 1'b0;
-  always #4 clk = ~clk;  // 125 MHz
-  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
-  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
-  initial #22 rst_n = 1'b1;
+  logic clk, rst_n;
+  longint cyc;
+  tb_replay_clock u_clock (.clk, .rst_n, .cyc);
 
   // Source: offers on 3 of 4 cycles; holds a beat until it is accepted.
-  int i = 0, cyc = 0;
-  logic offer, in_valid, in_ready;
-  always_ff @(posedge clk) cyc <= cyc + 1;
-  assign offer    = (cyc % 4) != 3;
-  logic held = 1'b0;
-  assign in_valid = rst_n && (i < Beats) && (offer || held);
-  always_ff @(posedge clk) begin
-    held <= in_valid && !in_ready;
-    if (in_valid && in_ready) i <= i + 1;
-  end
+  int i;
+  logic in_valid, in_ready;
+  tb_replay_source #(.Count(Beats), .Period(4), .Idle(3)) u_in (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(in_ready), .valid_o(in_valid),
+    .count_o(i)
+  );
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each output must be the next expected line.
   int o = 0;

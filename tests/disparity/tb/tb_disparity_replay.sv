@@ -46,30 +46,25 @@ module tb_disparity_replay #(
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
   end
 
-  logic clk = 1'b0, rst_n = 1'b0;
-  always #4 clk = ~clk;  // 125 MHz
-  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
-  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
-  initial #22 rst_n = 1'b1;
-
-  int cyc = 0;
-  always_ff @(posedge clk) cyc <= cyc + 1;
+  logic clk, rst_n;
+  longint cyc;
+  tb_replay_clock u_clock (.clk, .rst_n, .cyc);
 
   // Left source: offers on 3 of 4 cycles; right source on 4 of 5, out of step. A beat is held
   // until taken (the stage takes both sides together).
-  int i = 0, j = 0;
-  logic l_valid, l_ready, l_held = 1'b0, r_valid, r_ready, r_held = 1'b0;
+  int i, j;
+  logic l_valid, l_ready, r_valid, r_ready;
   logic [BeatW+1:0] l_beat, r_beat;
-  assign l_valid = rst_n && (i < Beats) && (((cyc % 4) != 3) || l_held);
-  assign r_valid = rst_n && (j < Beats) && (((cyc % 5) != 2) || r_held);
+  tb_replay_source #(.Count(Beats), .Period(4), .Idle(3)) u_l (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(l_ready), .valid_o(l_valid),
+    .count_o(i)
+  );
+  tb_replay_source #(.Count(Beats), .Period(5), .Idle(2)) u_r (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(r_ready), .valid_o(r_valid),
+    .count_o(j)
+  );
   assign l_beat  = l_mem[(i < Beats) ? i : 0];
   assign r_beat  = r_mem[(j < Beats) ? j : 0];
-  always_ff @(posedge clk) begin
-    l_held <= l_valid && !l_ready;
-    r_held <= r_valid && !r_ready;
-    if (l_valid && l_ready) i <= i + 1;
-    if (r_valid && r_ready) j <= j + 1;
-  end
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each output must be the next expected line.
   int o = 0;

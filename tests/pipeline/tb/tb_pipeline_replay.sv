@@ -80,14 +80,9 @@ module tb_pipeline_replay #(
     $readmemh({dir, "/right.hex"}, r_mem, 0, RawBeats - 1);
   end
 
-  logic clk = 1'b0, rst_n = 1'b0;
-  always #4 clk = ~clk;  // 125 MHz
-  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
-  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart). cfg_* hold their
-  // values from time 0.
-  initial #22 rst_n = 1'b1;
-  int cyc = 0;
-  always @(posedge clk) cyc <= cyc + 1;
+  logic clk, rst_n;
+  longint cyc;
+  tb_replay_clock u_clock (.clk, .rst_n, .cyc);
 
   // Knots first, one a clock, run_i low; then run_i high for good.
   int k = 0;
@@ -99,19 +94,19 @@ module tb_pipeline_replay #(
   assign knot_w = knot[(k < Knots) ? k : 0];
 
   // Sources: left offers on 3 of 4 cycles, right on 4 of 5; a beat is held until taken.
-  int i = 0, j = 0;
-  logic l_valid, l_ready, l_held = 1'b0, r_valid, r_ready, r_held = 1'b0;
+  int i, j;
+  logic l_valid, l_ready, r_valid, r_ready;
   logic [BeatW+1:0] l_beat, r_beat;
-  assign l_valid = run && (i < RawBeats) && (((cyc % 4) != 3) || l_held || stalls == 0);
-  assign r_valid = run && (j < RawBeats) && (((cyc % 5) != 2) || r_held || stalls == 0);
+  tb_replay_source #(.Count(RawBeats), .Period(4), .Idle(3)) u_l (
+    .clk, .run_i(run), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(l_ready), .valid_o(l_valid),
+    .count_o(i)
+  );
+  tb_replay_source #(.Count(RawBeats), .Period(5), .Idle(2)) u_r (
+    .clk, .run_i(run), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(r_ready), .valid_o(r_valid),
+    .count_o(j)
+  );
   assign l_beat  = l_mem[(i < RawBeats) ? i : 0];
   assign r_beat  = r_mem[(j < RawBeats) ? j : 0];
-  always @(posedge clk) begin
-    l_held <= l_valid && !l_ready;
-    r_held <= r_valid && !r_ready;
-    if (l_valid && l_ready) i <= i + 1;
-    if (r_valid && r_ready) j <= j + 1;
-  end
 
   logic out_valid, out_ready, out_last, obj_valid, obj_ready, obj_last;
   logic [OutW-1:0] out_data;

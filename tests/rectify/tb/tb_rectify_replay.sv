@@ -50,36 +50,29 @@ module tb_rectify_replay #(
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
   end
 
-  logic clk = 1'b0, rst_n = 1'b0;
-  always #4 clk = ~clk;  // 125 MHz
-  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
-  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
-  initial #22 rst_n = 1'b1;
-
-  int cyc = 0;
-  always_ff @(posedge clk) cyc <= cyc + 1;
+  logic clk, rst_n;
+  longint cyc;
+  tb_replay_clock u_clock (.clk, .rst_n, .cyc);
 
   // Raw source: offers on 3 of 4 cycles; holds a beat until it is accepted.
-  int i = 0;
-  logic in_valid, in_ready, in_held = 1'b0;
+  int i;
+  logic in_valid, in_ready;
   logic [BeatW+1:0] in_beat;
-  assign in_valid = rst_n && (i < Beats) && (((cyc % 4) != 3) || in_held);
+  tb_replay_source #(.Count(Beats), .Period(4), .Idle(3)) u_in (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(in_ready), .valid_o(in_valid),
+    .count_o(i)
+  );
   assign in_beat  = in_mem[(i < Beats) ? i : 0];
-  always_ff @(posedge clk) begin
-    in_held <= in_valid && !in_ready;
-    if (in_valid && in_ready) i <= i + 1;
-  end
 
   // Map source: offers on 4 of 5 cycles, out of step with the raw source.
-  int j = 0;
-  logic map_valid, map_ready, map_held = 1'b0;
+  int j;
+  logic map_valid, map_ready;
   logic [MapW+1:0] map_beat;
-  assign map_valid = rst_n && (j < Beats) && (((cyc % 5) != 2) || map_held);
+  tb_replay_source #(.Count(Beats), .Period(5), .Idle(2)) u_map (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(map_ready), .valid_o(map_valid),
+    .count_o(j)
+  );
   assign map_beat  = map_mem[(j < Beats) ? j : 0];
-  always_ff @(posedge clk) begin
-    map_held <= map_valid && !map_ready;
-    if (map_valid && map_ready) j <= j + 1;
-  end
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each output must be the next expected line.
   int o = 0;

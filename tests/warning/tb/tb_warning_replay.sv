@@ -42,25 +42,19 @@ module tb_warning_replay #(
     $readmemh({dir, "/expected.hex"}, exp_mem, 0, WordsOut - 1);
   end
 
-  logic clk = 1'b0, rst_n = 1'b0;
-  always #4 clk = ~clk;  // 125 MHz
-  // Released between two clock edges (20 and 24 ns): on an edge, simulators order it differently
-  // (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
-  initial #22 rst_n = 1'b1;
-
-  longint cyc = 0;
-  always_ff @(posedge clk) cyc <= cyc + 1;
+  logic clk, rst_n;
+  longint cyc;
+  tb_replay_clock u_clock (.clk, .rst_n, .cyc);
 
   // Source: offers on 3 of 4 cycles; a word once offered is held until taken.
-  int i = 0;
-  logic in_valid, in_ready, in_held = 1'b0;
+  int i;
+  logic in_valid, in_ready;
   logic [InW:0] in_word;
-  assign in_valid = rst_n && (i < WordsIn) && (((cyc % 4) != 3) || in_held || stalls == 0);
+  tb_replay_source #(.Count(WordsIn), .Period(4), .Idle(3)) u_in (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .valid_o(in_valid),
+    .count_o(i)
+  );
   assign in_word  = in_mem[(i < WordsIn) ? i : 0];
-  always_ff @(posedge clk) begin
-    in_held <= in_valid && !in_ready;
-    if (in_valid && in_ready) i <= i + 1;
-  end
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each word taken must be the next expected one.
   int o = 0;
