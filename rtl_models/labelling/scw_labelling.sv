@@ -88,6 +88,11 @@ module scw_labelling #(
   // column <= W - 1, a row <= H - 1, a disparity <= 0x7fff, m_pq <= S_p(W) S_q(H) with
   // S_k(n) = sum_{i < n} i^k, sum_d <= W H 0x7fff and sum_dd <= W H 0x7fff^2 (1280 x 480: 20,
   // 11, 9, 15, m10 .. m03 29 28 39 37 36 49 47 45 44, sum_d 35 and sum_dd 50 bits, 569 in all).
+  // The bits of 0 .. b (1 for b = 0), at most 64: the width of a field whose largest value is b.
+  function automatic int unsigned bits_upto(input logic [127:0] b);
+    // assigned to its name: Yosys 0.23 does not parse a return statement
+    bits_upto = (b == 0) ? 1 : ($clog2(b + 1) > 64 ? 64 : $clog2(b + 1));
+  endfunction
   localparam logic [127:0] Wd = 128'(MaxWidthPx);
   localparam logic [127:0] Hd = 128'(MaxHeight);
   localparam logic [127:0] Sx1 = Wd * (Wd - 1) / 2;
@@ -100,30 +105,19 @@ module scw_labelling #(
   localparam int unsigned PosXW /*verilator public*/ = (MaxWidthPx > 1) ? $clog2(Wd) : 1;
   localparam int unsigned PosYW /*verilator public*/ = (MaxHeight > 1) ? $clog2(Hd) : 1;
   localparam int unsigned DispW /*verilator public*/ = 15;
-  // bits of 0 .. b, at most 64
-  localparam int unsigned M10W /*verilator public*/ =
-      (Sx1 * Hd == 0) ? 1 : ($clog2(Sx1 * Hd + 1) > 64 ? 64 : $clog2(Sx1 * Hd + 1));
-  localparam int unsigned M01W /*verilator public*/ =
-      (Wd * Sy1 == 0) ? 1 : ($clog2(Wd * Sy1 + 1) > 64 ? 64 : $clog2(Wd * Sy1 + 1));
-  localparam int unsigned M20W /*verilator public*/ =
-      (Sx2 * Hd == 0) ? 1 : ($clog2(Sx2 * Hd + 1) > 64 ? 64 : $clog2(Sx2 * Hd + 1));
-  localparam int unsigned M11W /*verilator public*/ =
-      (Sx1 * Sy1 == 0) ? 1 : ($clog2(Sx1 * Sy1 + 1) > 64 ? 64 : $clog2(Sx1 * Sy1 + 1));
-  localparam int unsigned M02W /*verilator public*/ =
-      (Wd * Sy2 == 0) ? 1 : ($clog2(Wd * Sy2 + 1) > 64 ? 64 : $clog2(Wd * Sy2 + 1));
-  localparam int unsigned M30W /*verilator public*/ =
-      (Sx3 * Hd == 0) ? 1 : ($clog2(Sx3 * Hd + 1) > 64 ? 64 : $clog2(Sx3 * Hd + 1));
-  localparam int unsigned M21W /*verilator public*/ =
-      (Sx2 * Sy1 == 0) ? 1 : ($clog2(Sx2 * Sy1 + 1) > 64 ? 64 : $clog2(Sx2 * Sy1 + 1));
-  localparam int unsigned M12W /*verilator public*/ =
-      (Sx1 * Sy2 == 0) ? 1 : ($clog2(Sx1 * Sy2 + 1) > 64 ? 64 : $clog2(Sx1 * Sy2 + 1));
-  localparam int unsigned M03W /*verilator public*/ =
-      (Wd * Sy3 == 0) ? 1 : ($clog2(Wd * Sy3 + 1) > 64 ? 64 : $clog2(Wd * Sy3 + 1));
+  localparam int unsigned M10W /*verilator public*/ = bits_upto(Sx1 * Hd);
+  localparam int unsigned M01W /*verilator public*/ = bits_upto(Wd * Sy1);
+  localparam int unsigned M20W /*verilator public*/ = bits_upto(Sx2 * Hd);
+  localparam int unsigned M11W /*verilator public*/ = bits_upto(Sx1 * Sy1);
+  localparam int unsigned M02W /*verilator public*/ = bits_upto(Wd * Sy2);
+  localparam int unsigned M30W /*verilator public*/ = bits_upto(Sx3 * Hd);
+  localparam int unsigned M21W /*verilator public*/ = bits_upto(Sx2 * Sy1);
+  localparam int unsigned M12W /*verilator public*/ = bits_upto(Sx1 * Sy2);
+  localparam int unsigned M03W /*verilator public*/ = bits_upto(Wd * Sy3);
   // sum_d <= W H 0x7fff, sum_dd <= W H 0x7fff^2 (1280 x 480: 35 and 50 bits)
   localparam logic [127:0] DMax = 128'h7fff;
   localparam int unsigned SumDW /*verilator public*/ = $clog2(Wd * Hd * DMax + 1);
-  localparam int unsigned SumDDW /*verilator public*/ =
-      $clog2(Wd * Hd * DMax * DMax + 1) > 64 ? 64 : $clog2(Wd * Hd * DMax * DMax + 1);
+  localparam int unsigned SumDDW /*verilator public*/ = bits_upto(Wd * Hd * DMax * DMax);
   localparam int unsigned DescW /*verilator public*/ =
       AreaW + 4 * PosXW + 4 * PosYW + 2 * DispW + M10W + M01W + M20W + M11W + M02W + M30W +
       M21W + M12W + M03W + SumDW + SumDDW;
