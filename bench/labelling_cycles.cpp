@@ -19,15 +19,16 @@
 #include <string>
 #include <vector>
 
+#include "Vbench_labelling.h"
+#include "Vbench_labelling_scw_labelling.h"
 #include "bench/labelling_bench_configs.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/labelling/second_pass.hpp"
 #include "host/reference/labelling_ref.hpp"
 #include "sim/core/frame_beats.hpp"
 #include "sim/models/labelling_model.hpp"
 #include "sim/rtl/labelling_rtl.hpp"
-#include "Vbench_labelling.h"
-#include "Vbench_labelling_scw_labelling.h"
 
 namespace {
 
@@ -125,9 +126,7 @@ int main(int argc, char** argv) {
 
   std::vector<Map> maps;
   {
-    cv::Mat gt = cv::imread(SCW_DATA_DIR "/tsukuba/truedisp.row3.col3.pgm", cv::IMREAD_UNCHANGED);
-    cv::Mat g16;
-    gt.convertTo(g16, CV_16U);
+    const cv::Mat g16 = scw::host::io::read_tsukuba_truth(SCW_DATA_DIR "/tsukuba", CV_16UC1);
     maps.push_back({"Tsukuba ground truth, resized", fit(g16)});
   }
   for (const auto& p : maps_in) {

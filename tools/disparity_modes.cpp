@@ -30,6 +30,7 @@
 #include "hls/disparity/disparity_params.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/rectify/calibration.hpp"
 #include "host/scene/presets.hpp"
 #include "host/scene/render.hpp"
@@ -106,10 +107,10 @@ std::array<Score, 3> score_pair(const Pair& p, int n) {
 }
 
 Pair tsukuba() {
-  const std::string dir = std::string(SCW_DATA_DIR) + "/tsukuba/";
-  Pair p{"Tsukuba", host::io::read_grey_image(dir + "scene1.row3.col3.ppm"),
-         host::io::read_grey_image(dir + "scene1.row3.col4.ppm"), {}, 0, 15};
-  cv::Mat gt = host::io::read_grey_image(dir + "truedisp.row3.col3.pgm");
+  const std::string dir = std::string(SCW_DATA_DIR) + "/tsukuba";
+  const auto [left, right] = host::io::read_tsukuba_pair(dir);
+  Pair p{"Tsukuba", left, right, {}, 0, 15};
+  const cv::Mat gt = host::io::read_tsukuba_truth(dir);
   gt.convertTo(p.truth, CV_32F, 1.0 / 16);  // value / 16 px
   p.truth.setTo(std::numeric_limits<float>::quiet_NaN(), gt == 0);
   return p;

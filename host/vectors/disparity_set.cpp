@@ -10,6 +10,7 @@
 
 #include "hls/pipeline/pipeline_params.hpp"
 #include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/core/frame_beats.hpp"
@@ -63,17 +64,11 @@ DisparityFrame synthetic() {
 
 /// A 96 x 48 crop of the bundled Tsukuba pair (read as every command reads it), opencv mode.
 DisparityFrame tsukuba(const std::filesystem::path& dir) {
-  const auto read = [&](const char* name) {
-    const auto p = dir / name;
-    if (!std::filesystem::exists(p))
-      throw std::runtime_error("vectors disparity: no '" + p.string() +
-                               "'; the tsukuba set needs data/tsukuba (give --data-dir)");
-    return host::io::read_grey_image(p.string());
-  };
+  const auto pair = host::io::read_tsukuba_pair(dir);
   const cv::Rect roi(144, 112, 96, 48);
   DisparityFrame f;
-  f.left = {read("scene1.row3.col3.ppm")(roi).clone()};
-  f.right = {read("scene1.row3.col4.ppm")(roi).clone()};
+  f.left = {pair.left(roi).clone()};
+  f.right = {pair.right(roi).clone()};
   f.window = 9;
   f.mode = disparity::Mode::opencv;
   f.cfg = disparity::mode_config(f.mode, roi.width, roi.height, 0);

@@ -7,13 +7,12 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "hls/labelling/labelling.hpp"
 #include "hls/pipeline/pipeline_params.hpp"
-#include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/labelling/second_pass.hpp"
 #include "host/labelling/segment_files.hpp"
@@ -113,17 +112,9 @@ constexpr int kCropX = 264;
 constexpr int kCropY = 112;
 
 Preset tsukuba(const std::filesystem::path& data_dir) {
-  const auto path = data_dir / "truedisp.row3.col3.pgm";
-  if (!std::filesystem::exists(path))
-    throw std::runtime_error("vectors labelling: no '" + path.string() +
-                             "'; the tsukuba set needs data/tsukuba (give --data-dir)");
-  const cv::Mat truth = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
-  if (truth.type() != CV_8UC1 || truth.cols < kCropX + kW || truth.rows < kCropY + kH)
-    throw std::runtime_error("vectors labelling: '" + path.string() +
-                             "' is not the 8-bit 384x288 Tsukuba ground truth");
   // Middlebury stores disparity x 16 in 8 bits: already the stage's Q11.4.
-  cv::Mat d;
-  truth(cv::Rect(kCropX, kCropY, kW, kH)).convertTo(d, CV_16UC1);
+  const cv::Mat d =
+      host::io::read_tsukuba_truth(data_dir, CV_16UC1)(cv::Rect(kCropX, kCropY, kW, kH)).clone();
   Preset p;
   p.tiles_x = 2;
   p.tiles_y = 2;

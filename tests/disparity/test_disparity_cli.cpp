@@ -13,6 +13,7 @@
 
 #include "host/disparity/run_model.hpp"
 #include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "host/reference/stereo_bm.hpp"
 
@@ -28,10 +29,8 @@ struct Tsukuba {
 
 const Tsukuba& tsukuba() {
   static const Tsukuba t = [] {
-    const std::string dir = SCW_DATA_DIR "/tsukuba/";
-    return Tsukuba{host::io::read_grey_image(dir + "scene1.row3.col3.ppm"),
-                   host::io::read_grey_image(dir + "scene1.row3.col4.ppm"),
-                   host::io::read_grey_image(dir + "truedisp.row3.col3.pgm")};
+    const auto [left, right] = host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
+    return Tsukuba{left, right, host::io::read_tsukuba_truth(SCW_DATA_DIR "/tsukuba")};
   }();
   return t;
 }

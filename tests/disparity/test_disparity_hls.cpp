@@ -3,9 +3,9 @@
 // candidate), pixel for pixel, on random images and on Tsukuba; frames back to back.
 #include <catch2/catch.hpp>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "host/io/tsukuba.hpp"
 #include "host/reference/disparity_ref.hpp"
 #include "sim/core/frame_beats.hpp"
 #include "sim/models/disparity_model.hpp"
@@ -47,11 +47,7 @@ void check(const std::vector<Pair>& frames, int w, int h, const DisparityConfig&
 }
 
 Pair tsukuba(int x, int y, int w, int h) {
-  const std::string dir = SCW_DATA_DIR "/tsukuba/";
-  cv::Mat l = cv::imread(dir + "scene1.row3.col3.ppm", cv::IMREAD_GRAYSCALE);
-  cv::Mat r = cv::imread(dir + "scene1.row3.col4.ppm", cv::IMREAD_GRAYSCALE);
-  REQUIRE_FALSE(l.empty());
-  REQUIRE_FALSE(r.empty());
+  const auto [l, r] = scw::host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
   const cv::Rect roi(x, y, w, h);
   const cv::Mat lc = l(roi).clone(), rc = r(roi).clone();
   return {std::vector<std::uint8_t>(lc.datastart, lc.dataend),

@@ -7,14 +7,13 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 #include <vector>
 
 #include "hls/ground/ground.hpp"
 #include "host/disparity/run_model.hpp"
 #include "host/ground/run_model.hpp"
-#include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/reference/ground_ref.hpp"
 #include "sim/core/stream_check.hpp"
 #include "sim/models/ground_model.hpp"
@@ -220,13 +219,8 @@ TEST_CASE("latency is the named constant, one beat per clock", "[hls][ground]") 
 }
 
 TEST_CASE("model equals the reference on Tsukuba", "[hls][ground]") {
-  const cv::Mat gt =
-      cv::imread(SCW_DATA_DIR "/tsukuba/truedisp.row3.col3.pgm", cv::IMREAD_UNCHANGED);
-  REQUIRE(gt.type() == CV_8UC1);
-  cv::Mat gt16;
-  gt.convertTo(gt16, CV_16S);  // value = disparity x 16: already Q11.4
-  const auto l = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
-  const auto r = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
+  const cv::Mat gt16 = scw::host::io::read_tsukuba_truth(SCW_DATA_DIR "/tsukuba", CV_16SC1);
+  const auto [l, r] = scw::host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
   const cv::Mat thesis = scw::disparity::disparity_image(
       l, r, 9, 0, 15, scw::disparity::mode_config(scw::disparity::Mode::thesis, l.cols, l.rows, 0));
   const cv::Mat opencv = scw::disparity::disparity_image(

@@ -4,23 +4,22 @@
 // the next frame correct.
 #include <catch2/catch.hpp>
 #include <cstdint>
-#include <opencv2/imgcodecs.hpp>
 #include <vector>
 
-#include "host/disparity/run_model.hpp"
-#include "host/io/image_file.hpp"
-#include "sim/models/ground_model.hpp"
-#include "sim/models/pipeline_shell.hpp"
-#include "sim/rtl/ground_rtl.hpp"
-#include "sim/rtl/rtl_stream.hpp"
-#include "tests/common/twin_check.hpp"
-#include "tests/ground/ground_maps.hpp"
 #include "Vground_lb.h"
 #include "Vground_lb_scw_line_buffer.h"
 #include "Vground_w20.h"
 #include "Vground_w20_scw_ground.h"
 #include "Vground_w32.h"
 #include "Vground_w32_scw_ground.h"
+#include "host/disparity/run_model.hpp"
+#include "host/io/tsukuba.hpp"
+#include "sim/models/ground_model.hpp"
+#include "sim/models/pipeline_shell.hpp"
+#include "sim/rtl/ground_rtl.hpp"
+#include "sim/rtl/rtl_stream.hpp"
+#include "tests/common/twin_check.hpp"
+#include "tests/ground/ground_maps.hpp"
 
 namespace {
 
@@ -146,13 +145,8 @@ TEST_CASE("the stage's line buffer, RAM output registered, equals hls::LineBuffe
 }
 
 TEST_CASE("scw_ground equals the model clock for clock on Tsukuba crops", "[ground][rtl]") {
-  const cv::Mat gt =
-      cv::imread(SCW_DATA_DIR "/tsukuba/truedisp.row3.col3.pgm", cv::IMREAD_UNCHANGED);
-  REQUIRE(gt.type() == CV_8UC1);
-  cv::Mat gt16;
-  gt.convertTo(gt16, CV_16S);  // value = disparity x 16: already Q11.4
-  const auto l = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
-  const auto r = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
+  const cv::Mat gt16 = scw::host::io::read_tsukuba_truth(SCW_DATA_DIR "/tsukuba", CV_16SC1);
+  const auto [l, r] = scw::host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
   const cv::Mat d = scw::disparity::disparity_image(
       l, r, 9, 0, 15, scw::disparity::mode_config(scw::disparity::Mode::thesis, l.cols, l.rows, 0));
   // The table and the lamp's base (rows 200 .. 247) and the statue's head (rows 60 .. 107).

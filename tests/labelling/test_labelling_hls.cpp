@@ -2,14 +2,13 @@
 // [hls] The streaming labelling model against the flood-fill reference: random maps of many
 // densities, adversarial shapes, every tile grid, Tsukuba's truth and a disparity-stage map;
 // overflow and stream errors flagged with the next frame correct.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
 #include <string>
 
 #include "host/disparity/run_model.hpp"
-#include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/labelling/run_model.hpp"
 #include "sim/models/labelling_model.hpp"
 #include "tests/labelling/labelling_run.hpp"
@@ -127,17 +126,12 @@ void check_segment(const cv::Mat& d16, int min_area, std::initializer_list<Grid>
 }  // namespace
 
 TEST_CASE("labelling model equals the flood fill on Tsukuba's ground truth", "[hls]") {
-  const cv::Mat gt = cv::imread(SCW_DATA_DIR "/tsukuba/truedisp.row3.col3.pgm",
-                                cv::IMREAD_UNCHANGED);
-  REQUIRE(gt.type() == CV_8UC1);
-  cv::Mat d16;
-  gt.convertTo(d16, CV_16U);  // value = disparity x 16: already Q11.4
+  const cv::Mat d16 = scw::host::io::read_tsukuba_truth(SCW_DATA_DIR "/tsukuba", CV_16UC1);
   for (int min_area : {1, 50}) check_segment(d16, min_area, {{1, 1}, {4, 4}, {5, 3}, {8, 8}});
 }
 
 TEST_CASE("labelling model equals the flood fill on a disparity-stage map of Tsukuba", "[hls]") {
-  const auto l = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
-  const auto r = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
+  const auto [l, r] = scw::host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
   const cv::Mat d = scw::disparity::disparity_image(
       l, r, 9, 0, 15, scw::disparity::mode_config(scw::disparity::Mode::thesis, l.cols, l.rows, 0));
   cv::Mat d16;

@@ -6,11 +6,10 @@
 // refused by name.
 #include <catch2/catch.hpp>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
 #include <string>
 
 #include "host/disparity/run_model.hpp"
-#include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/labelling/run_model.hpp"
 #include "sim/models/labelling_model.hpp"
 #include "tests/labelling/labelling_run.hpp"
@@ -105,8 +104,7 @@ TEST_CASE("labelling lanes: stalls on either side change no word", "[hls]") {
 }
 
 TEST_CASE("labelling lanes equal one lane on a disparity-stage map of Tsukuba", "[hls]") {
-  const auto l = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col3.ppm");
-  const auto r = scw::host::io::read_grey_image(SCW_DATA_DIR "/tsukuba/scene1.row3.col4.ppm");
+  const auto [l, r] = scw::host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
   const cv::Mat d = scw::disparity::disparity_image(
       l, r, 9, 0, 15, scw::disparity::mode_config(scw::disparity::Mode::thesis, l.cols, l.rows, 0));
   DispMap m{"tsukuba", d.cols, d.rows, {}};

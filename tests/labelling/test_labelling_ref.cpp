@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <limits>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
 #include <stdexcept>
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "hls/labelling/labelling_params.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/labelling/hu_moments.hpp"
 #include "host/reference/labelling_ref.hpp"
 
@@ -597,9 +597,7 @@ TEST_CASE("bad arguments are refused", "[labelling][ref]") {
 
 TEST_CASE("Tsukuba ground truth: plausible objects, labels matching areas", "[labelling][ref]") {
   // 8-bit disparity x 16, i.e. already Q11.4; 0 marks unknown pixels at the border.
-  const cv::Mat gt = cv::imread(std::string(SCW_DATA_DIR) + "/tsukuba/truedisp.row3.col3.pgm",
-                                cv::IMREAD_UNCHANGED);
-  REQUIRE(gt.type() == CV_8UC1);
+  const cv::Mat gt = scw::host::io::read_tsukuba_truth(SCW_DATA_DIR "/tsukuba");
   const Map m = from_mat(gt);
   const LabellingReference all = run(m, 0, 1);
   const LabellingReference big = run(m, 0, 50);

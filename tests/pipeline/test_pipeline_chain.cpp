@@ -4,17 +4,14 @@
 // backpressure; broken frames are flagged and the next frame is right; on a Tsukuba crop the
 // frame results equal the floating-point chain's (cv::StereoBM, flood fill, Eigen).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "hls/pipeline/pipeline_params.hpp"
 #include "host/disparity/run_model.hpp"
-#include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/pipeline/reference_chain.hpp"
 #include "host/pipeline/setup.hpp"
 #include "host/pipeline/synthetic.hpp"
@@ -327,10 +324,7 @@ TEST_CASE("broken input frames are flagged in their result, the next frame is ri
 TEST_CASE("a Tsukuba crop: RTL chain = C++ chain = the floating-point chain's frame result",
           "[pipeline][rtl][ref]") {
   constexpr int P = 1;
-  const cv::Mat l = scw::host::io::read_grey_image(std::string(SCW_DATA_DIR) +
-                                                    "/tsukuba/scene1.row3.col3.ppm");
-  const cv::Mat r = scw::host::io::read_grey_image(std::string(SCW_DATA_DIR) +
-                                                    "/tsukuba/scene1.row3.col4.ppm");
+  const auto [l, r] = scw::host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
   // The lamp, the head and the table: 128 x 96 from (128, 96).
   const cv::Rect crop(128, 96, 128, 96);
   const cv::Mat lc = l(crop).clone(), rc = r(crop).clone();

@@ -2,23 +2,17 @@
 // [pipeline][app] `scw run --engine rtl`: the application chain with the stages as Verilated RTL
 // gives the frame the C++ models give; a frame no build takes is refused with the builds named.
 #include <catch2/catch.hpp>
-
+#include <opencv2/imgproc.hpp>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include <opencv2/imgproc.hpp>
-
 #include "host/app/run.hpp"
 #include "host/disparity/run_model.hpp"
-#include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/pipeline/rtl_engine.hpp"
 
 namespace {
-
-cv::Mat tsukuba(const char* name) {
-  return scw::host::io::read_grey_image(std::string(SCW_DATA_DIR) + "/tsukuba/" + name);
-}
 
 scw::app::RunOptions crop_options() {
   scw::app::RunOptions o;
@@ -40,8 +34,9 @@ scw::app::RunOptions crop_options() {
 TEST_CASE("run with the Verilated stages equals run with the C++ models on a Tsukuba crop",
           "[pipeline][app][rtl]") {
   const cv::Rect crop(128, 96, 128, 96);
-  const cv::Mat l = tsukuba("scene1.row3.col3.ppm")(crop).clone();
-  const cv::Mat r = tsukuba("scene1.row3.col4.ppm")(crop).clone();
+  const auto pair = scw::host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
+  const cv::Mat l = pair.left(crop).clone();
+  const cv::Mat r = pair.right(crop).clone();
   const auto o = crop_options();
   scw::app::Runner cpp(o, std::nullopt);
   scw::app::Runner rtl(o, std::nullopt, scw::host::pipeline::make_rtl_engine(o, 128, 96));

@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "host/io/image_file.hpp"
+#include "host/io/tsukuba.hpp"
 #include "host/soak/reset_trials.hpp"
 #include "host/soak/soak.hpp"
 #include "sim/rtl/verilated_harness.hpp"
@@ -17,9 +17,8 @@ namespace {
 using namespace scw::host::soak;
 
 RealPair tsukuba() {
-  const std::string d = std::string(SCW_DATA_DIR) + "/tsukuba/";
-  return {scw::host::io::read_grey_image(d + "scene1.row3.col3.ppm"),
-          scw::host::io::read_grey_image(d + "scene1.row3.col4.ppm")};
+  const auto p = scw::host::io::read_tsukuba_pair(SCW_DATA_DIR "/tsukuba");
+  return {p.left, p.right};
 }
 
 }  // namespace
