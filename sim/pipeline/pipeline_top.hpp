@@ -72,7 +72,7 @@ void drive_pipeline_cfg(VM& m, const PipelineSetup& s) {
   drive_disparity_cfg<VM, typename Build::disparity>(m, s.disparity_config());
   drive_labelling_cfg(m, l);  // the top's width and height ports: the same frame
   drive_warning_cfg(m, s.warning);
-  drive_road_config(m, s.road);
+  drive_road_cfg(m, s.road);
 }
 
 template <typename VM, typename Build>

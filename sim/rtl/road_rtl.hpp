@@ -32,7 +32,7 @@ using RoadRtl = RtlStream<VM, typename Params::in_beat, typename Params::out_bea
 /// Drives the configuration word cfg_road_i of a scw_road (or of a top that passes it through)
 /// from `cfg`, packed by its one field table.
 template <typename VM>
-void drive_road_config(VM& m, const hls::road::RoadConfig& cfg) {
+void drive_road_cfg(VM& m, const hls::road::RoadConfig& cfg) {
   words::pack_word(cfg, road_cfg::kConfigFields).to_port(m.cfg_road_i);
 }
 
@@ -42,7 +42,7 @@ template <typename VM, typename Params>
 RoadRtl<VM, Params> make_road_rtl(const std::string& name, const hls::road::RoadConfig& cfg) {
   hls::road::check_config(cfg);
   return RoadRtl<VM, Params>(name, [cfg](VM& m) {
-    drive_road_config(m, cfg);
+    drive_road_cfg(m, cfg);
     m.line_ready_i = 1;
   });
 }
@@ -59,7 +59,7 @@ class RoadSideRtl : public RtlAdapter<VM> {
   RoadSideRtl(const std::string& name, const hls::road::RoadConfig& cfg)
       : RtlAdapter<VM>(name, [&cfg](VM& m) {
           hls::road::check_config(cfg);
-          drive_road_config(m, cfg);
+          drive_road_cfg(m, cfg);
         }) {}
 
   SideOutputs<out_type, side_type> eval(bool in_valid, const in_type& in, bool out_ready,
