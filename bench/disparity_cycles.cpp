@@ -27,6 +27,11 @@
 #include <string>
 #include <vector>
 
+#include "Vbench_disparity_p1.h"
+#include "Vbench_disparity_p1_scw_disparity.h"
+#include "Vbench_disparity_p2.h"
+#include "Vbench_disparity_p2_scw_disparity.h"
+#include "bench/cycle_bench_options.hpp"
 #include "bench/disparity_bench_configs.hpp"
 #include "hls/disparity/disparity.hpp"
 #include "host/disparity/run_model.hpp"
@@ -37,10 +42,6 @@
 #include "sim/models/disparity_model.hpp"
 #include "sim/rtl/disparity_rtl.hpp"
 #include "sim/rtl/rtl_params.hpp"
-#include "Vbench_disparity_p1.h"
-#include "Vbench_disparity_p1_scw_disparity.h"
-#include "Vbench_disparity_p2.h"
-#include "Vbench_disparity_p2_scw_disparity.h"
 
 namespace {
 
@@ -515,17 +516,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--right", o.right, "right image, resized to 1280 x 480 grey")
       ->capture_default_str();
-  app.add_option("--ppc", o.ppc, "pixels per clock, comma separated (1, 2)")
-      ->delimiter(',')
-      ->capture_default_str();
-  app.add_option("--engine", o.engine, "rtl, cpp or both (both compares them)")
-      ->check(CLI::IsMember({"rtl", "cpp", "both"}))
-      ->capture_default_str();
+  bench::add_cycle_options(app, o.ppc, "1, 2", o.engine, o.frames);
   app.add_option("--mode", o.mode, "thesis, opencv or both")
       ->check(CLI::IsMember({"thesis", "opencv", "both"}))
-      ->capture_default_str();
-  app.add_option("--frames", o.frames, "frames back to back (>= 2 for a frame period)")
-      ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   app.add_flag("!--no-reference", o.reference,
                "skip the check of every output pixel against the direct reference (seconds per "

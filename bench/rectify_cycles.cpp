@@ -28,6 +28,13 @@
 #include <string>
 #include <vector>
 
+#include "Vbench_rectify_p1.h"
+#include "Vbench_rectify_p1_scw_rectify.h"
+#include "Vbench_rectify_p2.h"
+#include "Vbench_rectify_p2_scw_rectify.h"
+#include "Vbench_rectify_p4.h"
+#include "Vbench_rectify_p4_scw_rectify.h"
+#include "bench/cycle_bench_options.hpp"
 #include "bench/rectify_bench_configs.hpp"
 #include "host/pipeline/thesis_figures.hpp"
 #include "host/rectify/fixed_map.hpp"
@@ -40,12 +47,6 @@
 #include "sim/models/rectify_model.hpp"
 #include "sim/rtl/rectify_rtl.hpp"
 #include "sim/rtl/rtl_params.hpp"
-#include "Vbench_rectify_p1.h"
-#include "Vbench_rectify_p1_scw_rectify.h"
-#include "Vbench_rectify_p2.h"
-#include "Vbench_rectify_p2_scw_rectify.h"
-#include "Vbench_rectify_p4.h"
-#include "Vbench_rectify_p4_scw_rectify.h"
 
 namespace {
 
@@ -417,15 +418,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Cycles of the rectify stage at 1280 x 480 (RTL and C++ model, P = 1, 2, 4)"};
   app.add_option("--image", o.image, "raw image, resized to 1280 x 480 grey")
       ->capture_default_str();
-  app.add_option("--ppc", o.ppc, "pixels per clock, comma separated (1, 2, 4)")
-      ->delimiter(',')
-      ->capture_default_str();
-  app.add_option("--engine", o.engine, "rtl, cpp or both (both compares them)")
-      ->check(CLI::IsMember({"rtl", "cpp", "both"}))
-      ->capture_default_str();
-  app.add_option("--frames", o.frames, "frames back to back (>= 2 for a frame period)")
-      ->check(CLI::Range(1, 1000))
-      ->capture_default_str();
+  bench::add_cycle_options(app, o.ppc, "1, 2, 4", o.engine, o.frames);
   app.add_option("--fifo-depth", o.fifo_depth, "depth of the three FIFOs")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
