@@ -11,9 +11,6 @@ module tb_line_buffer_replay #(
   parameter int Rows       = 3,
   parameter int Beats      = 512
 );
-  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
-  // k is the ready of cycles k mod 7.
-  localparam logic [6:0] ReadyPattern = 7'b1001011;
   localparam int BeatW = Ppc * 8;
   localparam int OutW  = Rows * BeatW;
 
@@ -42,7 +39,7 @@ module tb_line_buffer_replay #(
   int o = 0;
   logic out_valid, out_ready, out_sof, out_eol, err;
   logic [OutW-1:0] out_data;
-  assign out_ready = ReadyPattern[cyc % 7];
+  tb_replay_sink u_sink (.cyc_i(cyc), .gaps_i(1'b1), .ready_o(out_ready));
 
   scw_line_buffer #(.Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .Rows(Rows)) u_dut (
     .clk_i(clk), .rst_ni(rst_n),

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // What every replay testbench shares, so that each holds only its block's ports and checks:
-// the clock, the reset and the cycle count (tb_replay_clock), and a source that offers beats on
-// a fixed pattern of cycles and holds a beat until it is taken (tb_replay_source).
+// the clock, the reset and the cycle count (tb_replay_clock), a source that offers beats on a
+// fixed pattern of cycles and holds a beat until it is taken (tb_replay_source), and a sink's
+// ready on another pattern (tb_replay_sink).
 `timescale 1ns / 1ps
 `default_nettype none
 
@@ -52,4 +53,18 @@ module tb_replay_source #(
     held <= valid_o && !ready_i;
     if (valid_o && ready_i) count_o <= count_o + 1;
   end
+endmodule
+
+// A sink's ready: the pattern 1,1,0,1,0,0,1 (bit k of 7'b1001011 is the ready of cycles k mod 7,
+// co-prime with the sources' periods 4 and 5 and with any row length), Phase cycles on; always
+// ready while gaps_i is low.
+module tb_replay_sink #(
+  parameter int Phase = 0
+) (
+  input  longint cyc_i,
+  input  logic   gaps_i,
+  output logic   ready_o
+);
+  localparam logic [6:0] Pattern = 7'b1001011;
+  assign ready_o = Pattern[(cyc_i + Phase) % 7] || !gaps_i;
 endmodule

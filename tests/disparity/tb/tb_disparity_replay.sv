@@ -19,9 +19,6 @@ module tb_disparity_replay #(
   parameter int Beats      = 768,
   parameter int CfgW       = 109   // scw_pkg::DisparityCfgBits
 );
-  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
-  // k is the ready of cycles k mod 7.
-  localparam logic [6:0] ReadyPattern = 7'b1001011;
   localparam int BeatW = Ppc * 8;
   localparam int OutW  = Ppc * 16;
   localparam int WW    = $clog2(MaxWidthPx + 1);
@@ -70,7 +67,7 @@ module tb_disparity_replay #(
   int o = 0;
   logic out_valid, out_ready, out_sof, out_eol, err;
   logic [OutW-1:0] out_data;
-  assign out_ready = ReadyPattern[cyc % 7];
+  tb_replay_sink u_sink (.cyc_i(cyc), .gaps_i(1'b1), .ready_o(out_ready));
 
   scw_disparity #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Window(Window),

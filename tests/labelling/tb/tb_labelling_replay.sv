@@ -26,9 +26,6 @@ module tb_labelling_replay #(
   parameter int OutW          = 897,
   parameter int CfgW          = 80   // cfg.hex's width_bits: scw_pkg::LabellingCfgBits
 );
-  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
-  // k is the ready of cycles k mod 7.
-  localparam logic [6:0] ReadyPattern = 7'b1001011;
   localparam int Nodes = MaxTilesX * MaxTilesY * LabelsPerTile;
   // Generous: the stage takes about one beat a clock, then sweeps its used nodes twice a frame;
   // the source idles 1 clock in 4 and the sink 3 in 7.
@@ -70,7 +67,7 @@ module tb_labelling_replay #(
   int o = 0, statuses = 0;
   logic out_valid, out_ready, out_last, err;
   logic [OutW-1:0] out_data;
-  assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
+  tb_replay_sink u_sink (.cyc_i(cyc), .gaps_i(stalls != 0), .ready_o(out_ready));
 
   scw_labelling #(
     .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .MaxTilesX(MaxTilesX),

@@ -52,8 +52,6 @@ module tb_pipeline_replay #(
   localparam int SlotW  = $clog2(RectRows);
   localparam int ObjW   = ObjBits - 1;
   localparam int OutW   = ResBits - 1;
-  // Ready 1,1,0,1,0,0,1 (bit k: cycles k mod 7); the object table on another phase of it.
-  localparam logic [6:0] ReadyPattern = 7'b1001011;
   // Generous: a frame takes a few thousand clocks at the small size, a few times more stalled.
   localparam int MaxCycles = 64 * (RawBeats + ObjWords + Results) + 8 * Knots + 200000;
 
@@ -112,8 +110,9 @@ module tb_pipeline_replay #(
   logic [OutW-1:0] out_data;
   logic [ObjW-1:0] obj_data;
   logic [7:0] err;
-  assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
-  assign obj_ready = ReadyPattern[(cyc + 3) % 7] || stalls == 0;
+  // The object table's sink on another phase of the results' pattern.
+  tb_replay_sink u_out_sink (.cyc_i(cyc), .gaps_i(stalls != 0), .ready_o(out_ready));
+  tb_replay_sink #(.Phase(3)) u_obj_sink (.cyc_i(cyc), .gaps_i(stalls != 0), .ready_o(obj_ready));
 
   scw_pipeline #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .RectRows(RectRows),

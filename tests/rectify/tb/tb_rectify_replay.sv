@@ -17,9 +17,6 @@ module tb_rectify_replay #(
   parameter int CoordBits  = 14,
   parameter int Beats      = 1024
 );
-  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
-  // k is the ready of cycles k mod 7.
-  localparam logic [6:0] ReadyPattern = 7'b1001011;
   localparam int MaxWH   = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight;
   // What scw_rectify derives from its parameters; the manifest's coord_bits must agree.
   localparam int DutCoordBits = $clog2(MaxWH * (1 << FracBits) + 1) + 1;
@@ -79,7 +76,7 @@ module tb_rectify_replay #(
   logic out_valid, out_ready, out_sof, out_eol;
   logic [BeatW-1:0] out_data;
   logic [2:0] err;
-  assign out_ready = ReadyPattern[cyc % 7];
+  tb_replay_sink u_sink (.cyc_i(cyc), .gaps_i(1'b1), .ready_o(out_ready));
 
   scw_rectify #(
     .Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .MaxHeight(MaxHeight), .Rows(Rows), .FracBits(FracBits)

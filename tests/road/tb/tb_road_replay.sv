@@ -25,9 +25,6 @@ module tb_road_replay #(
   // Generous: a beat a clock, a fit before every frame; the source idles 1 clock in 4 and the
   // sink 3 in 7.
   localparam int MaxCycles = 8 * Beats + 4 * (Frames + 1) * (FitClocks + 16) + 10000;
-  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the source's 4 and with any row length): bit k is
-  // the ready of cycles k mod 7.
-  localparam logic [6:0] ReadyPattern = 7'b1001011;
 
   logic [DataW+1:0] in_mem  [Beats];  // {eol, sof, px[Ppc-1] .. px[0]}, 16-bit Q11.4 pixels
   logic [DataW+1:0] exp_mem [Beats];
@@ -73,7 +70,7 @@ module tb_road_replay #(
   int o = 0;
   logic out_valid, out_ready, out_sof, out_eol;
   logic [DataW-1:0] out_data;
-  assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
+  tb_replay_sink u_sink (.cyc_i(cyc), .gaps_i(stalls != 0), .ready_o(out_ready));
 
   logic        line_valid;  // read every clock: not part of the set
   logic [17:0] line_a;

@@ -20,9 +20,6 @@ module tb_warning_replay #(
   parameter int OutW           = 199,
   parameter int CfgW           = 237   // cfg.hex's width_bits: scw_pkg::WarningCfgBits
 );
-  // Sink pattern 1,1,0,1,0,0,1 (co-prime with the sources' 4 and 5 and with any row length): bit
-  // k is the ready of cycles k mod 7.
-  localparam logic [6:0] ReadyPattern = 7'b1001011;
   localparam int Latency = 64 + 47;  // hls::warning::kLatency (kRuleLatency + 47)
   // Generous: the stage takes a word a clock unless its result waits; the source idles 1 clock
   // in 4 and the sink 3 in 7.
@@ -60,7 +57,7 @@ module tb_warning_replay #(
   int o = 0;
   logic out_valid, out_ready, out_last;
   logic [OutW-1:0] out_data;
-  assign out_ready = ReadyPattern[cyc % 7] || stalls == 0;
+  tb_replay_sink u_sink (.cyc_i(cyc), .gaps_i(stalls != 0), .ready_o(out_ready));
 
   logic road_ready;  // never asked for a line here
   scw_warning #(.MaxDisparityPx(MaxDisparityPx)) u_dut (
