@@ -17,32 +17,13 @@ cv::Vec3b label_colour(int k) {
   const double h = std::fmod(static_cast<double>(k) * golden, 1.0) * 6.0;
   const double s = (k & 1) != 0 ? 0.9 : 0.6;
   const double v = (k & 2) != 0 ? 1.0 : 0.8;
-  const int sector = static_cast<int>(h) % 6;
-  const double f = h - std::floor(h);
-  const double p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-  double r = v, g = t, b = p;
-  switch (sector) {
-    case 0:
-      r = v, g = t, b = p;
-      break;
-    case 1:
-      r = q, g = v, b = p;
-      break;
-    case 2:
-      r = p, g = v, b = t;
-      break;
-    case 3:
-      r = p, g = q, b = v;
-      break;
-    case 4:
-      r = t, g = p, b = v;
-      break;
-    default:
-      r = v, g = p, b = q;
-      break;
-  }
-  const auto byte = [](double c) { return cv::saturate_cast<uchar>(std::lround(c * 255.0)); };
-  return {byte(b), byte(g), byte(r)};
+  // OpenCV's conversion: hue in degrees, saturation and value in 0 .. 1 for a float pixel.
+  cv::Mat3f px(
+      1, 1, cv::Vec3f(static_cast<float>(h * 60.0), static_cast<float>(s), static_cast<float>(v)));
+  cv::cvtColor(px, px, cv::COLOR_HSV2BGR);
+  const cv::Vec3f c = px(0, 0);
+  const auto byte = [](float x) { return cv::saturate_cast<uchar>(std::lround(x * 255.0f)); };
+  return {byte(c[0]), byte(c[1]), byte(c[2])};
 }
 
 cv::Mat colour_labels(const cv::Mat& labels16) {
