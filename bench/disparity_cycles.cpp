@@ -27,10 +27,6 @@
 #include <string>
 #include <vector>
 
-#include "Vbench_disparity_p1.h"
-#include "Vbench_disparity_p1_scw_disparity.h"
-#include "Vbench_disparity_p2.h"
-#include "Vbench_disparity_p2_scw_disparity.h"
 #include "bench/cycle_bench_options.hpp"
 #include "bench/disparity_bench_configs.hpp"
 #include "hls/disparity/disparity.hpp"
@@ -42,6 +38,10 @@
 #include "sim/models/disparity_model.hpp"
 #include "sim/rtl/disparity_rtl.hpp"
 #include "sim/rtl/rtl_params.hpp"
+#include "Vbench_disparity_p1.h"
+#include "Vbench_disparity_p1_scw_disparity.h"
+#include "Vbench_disparity_p2.h"
+#include "Vbench_disparity_p2_scw_disparity.h"
 
 namespace {
 

@@ -28,12 +28,6 @@
 #include <string>
 #include <vector>
 
-#include "Vbench_rectify_p1.h"
-#include "Vbench_rectify_p1_scw_rectify.h"
-#include "Vbench_rectify_p2.h"
-#include "Vbench_rectify_p2_scw_rectify.h"
-#include "Vbench_rectify_p4.h"
-#include "Vbench_rectify_p4_scw_rectify.h"
 #include "bench/cycle_bench_options.hpp"
 #include "bench/rectify_bench_configs.hpp"
 #include "host/pipeline/thesis_figures.hpp"
@@ -47,6 +41,12 @@
 #include "sim/models/rectify_model.hpp"
 #include "sim/rtl/rectify_rtl.hpp"
 #include "sim/rtl/rtl_params.hpp"
+#include "Vbench_rectify_p1.h"
+#include "Vbench_rectify_p1_scw_rectify.h"
+#include "Vbench_rectify_p2.h"
+#include "Vbench_rectify_p2_scw_rectify.h"
+#include "Vbench_rectify_p4.h"
+#include "Vbench_rectify_p4_scw_rectify.h"
 
 namespace {
 
