@@ -10,29 +10,42 @@
 
 namespace scw::labelling {
 
-cv::Vec3b label_colour(int k) {
-  // Hue steps of 1/phi of the circle never repeat and keep consecutive numbers far apart;
-  // saturation and value alternate as well so numbers whose hues come close still differ.
-  const double golden = 0.6180339887498949;
-  const double h = std::fmod(static_cast<double>(k) * golden, 1.0) * 6.0;
-  const double s = (k & 1) != 0 ? 0.9 : 0.6;
-  const double v = (k & 2) != 0 ? 1.0 : 0.8;
-  // OpenCV's conversion: hue in degrees, saturation and value in 0 .. 1 for a float pixel.
-  cv::Mat3f px(
-      1, 1, cv::Vec3f(static_cast<float>(h * 60.0), static_cast<float>(s), static_cast<float>(v)));
+namespace {
+
+/// Colours of objects first .. last, converted from HSV by OpenCV in one call (hue in degrees,
+/// saturation and value in 0 .. 1 for float pixels).
+std::vector<cv::Vec3b> label_colours(int first, int last) {
+  cv::Mat3f px(1, std::max(0, last - first + 1));
+  for (int k = first; k <= last; ++k) {
+    // Hue steps of 1/phi of the circle never repeat and keep consecutive numbers far apart;
+    // saturation and value alternate as well so numbers whose hues come close still differ.
+    const double golden = 0.6180339887498949;
+    const double h = std::fmod(static_cast<double>(k) * golden, 1.0) * 360.0;
+    px(0, k - first) =
+        cv::Vec3f(static_cast<float>(h), (k & 1) != 0 ? 0.9f : 0.6f, (k & 2) != 0 ? 1.0f : 0.8f);
+  }
+  std::vector<cv::Vec3b> out;
+  if (px.empty()) return out;
   cv::cvtColor(px, px, cv::COLOR_HSV2BGR);
-  const cv::Vec3f c = px(0, 0);
   const auto byte = [](float x) { return cv::saturate_cast<uchar>(std::lround(x * 255.0f)); };
-  return {byte(c[0]), byte(c[1]), byte(c[2])};
+  for (const cv::Vec3f& c : cv::Mat_<cv::Vec3f>(px))
+    out.emplace_back(byte(c[0]), byte(c[1]), byte(c[2]));
+  return out;
 }
+
+}  // namespace
+
+cv::Vec3b label_colour(int k) { return label_colours(k, k).front(); }
 
 cv::Mat colour_labels(const cv::Mat& labels16) {
   if (labels16.type() != CV_16UC1)
     throw std::invalid_argument("colour_labels needs a CV_16UC1 label image (0 = none)");
   double mx = 0;
   if (!labels16.empty()) cv::minMaxLoc(labels16, nullptr, &mx);
-  std::vector<cv::Vec3b> lut(static_cast<std::size_t>(mx) + 1);
-  for (std::size_t k = 1; k < lut.size(); ++k) lut[k] = label_colour(static_cast<int>(k));
+  // Every label's colour converted at once; 0 (no object) black.
+  std::vector<cv::Vec3b> lut{cv::Vec3b(0, 0, 0)};
+  const auto colours = label_colours(1, static_cast<int>(mx));
+  lut.insert(lut.end(), colours.begin(), colours.end());
   cv::Mat out(labels16.size(), CV_8UC3);
   for (int y = 0; y < labels16.rows; ++y) {
     const auto* lab = labels16.ptr<std::uint16_t>(y);
