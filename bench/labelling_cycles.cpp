@@ -19,8 +19,6 @@
 #include <string>
 #include <vector>
 
-#include "Vbench_labelling.h"
-#include "Vbench_labelling_scw_labelling.h"
 #include "bench/labelling_bench_configs.hpp"
 #include "host/io/tsukuba.hpp"
 #include "host/labelling/run_model.hpp"
@@ -29,6 +27,8 @@
 #include "sim/core/frame_beats.hpp"
 #include "sim/models/labelling_model.hpp"
 #include "sim/rtl/labelling_rtl.hpp"
+#include "Vbench_labelling.h"
+#include "Vbench_labelling_scw_labelling.h"
 
 namespace {
 

@@ -6,12 +6,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "Vground_lb.h"
-#include "Vground_lb_scw_line_buffer.h"
-#include "Vground_w20.h"
-#include "Vground_w20_scw_ground.h"
-#include "Vground_w32.h"
-#include "Vground_w32_scw_ground.h"
 #include "host/disparity/run_model.hpp"
 #include "host/io/tsukuba.hpp"
 #include "sim/models/ground_model.hpp"
@@ -20,6 +14,12 @@
 #include "sim/rtl/rtl_stream.hpp"
 #include "tests/common/twin_check.hpp"
 #include "tests/ground/ground_maps.hpp"
+#include "Vground_lb.h"
+#include "Vground_lb_scw_line_buffer.h"
+#include "Vground_w20.h"
+#include "Vground_w20_scw_ground.h"
+#include "Vground_w32.h"
+#include "Vground_w32_scw_ground.h"
 
 namespace {
 
