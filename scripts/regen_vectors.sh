@@ -10,7 +10,7 @@ out="${2:-$root/vectors}"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 
-# Puts the set a command wrote in its scratch folder FROM at $out/DEST, replacing what was there.
+# put_set FROM DEST: the set a command wrote in the scratch folder FROM, at $out/DEST (replaced).
 put_set() {
   mkdir -p "$(dirname "$out/$2")"
   rm -rf "${out:?}/$2"
