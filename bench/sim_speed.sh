@@ -10,7 +10,9 @@
 # and the top where it has one) are timed in the same loop, so the two are compared on the same
 # machine at the same moment, and whether their reports are the same is said. The RTL runs
 # are also timed with SCW_SKIP_IDLE=0 (every cycle of every block evaluated, "rtl-all"), which
-# shows what skipping the idle blocks' still cycles gains (docs/sim.md), and, where the build has
+# shows what skipping the idle blocks' still cycles gains (docs/sim.md), with `--threads 2`
+# ("rtl-2t": the chain's disparity and road stages on a second thread, docs/sim.md, whose report
+# must be the one-thread chain's but for the thread count), and, where the build has
 # the scw_pipeline top at that width, `--engine rtl-top` (the top as one Verilated model), whose
 # report must be the chain's (tests/pipeline/sim_engines_agree.cmake).
 set -euo pipefail
@@ -35,7 +37,7 @@ has_rtl() {
 runs=()
 for p in 1 2 4; do runs+=("cpp $p $scw"); done
 for p in 1 2 4; do
-  if has_rtl "$scw" "$p"; then runs+=("rtl $p $scw" "rtl-all $p $scw"); fi
+  if has_rtl "$scw" "$p"; then runs+=("rtl $p $scw" "rtl-all $p $scw" "rtl-2t $p $scw"); fi
   if has_rtl "$scw" "$p" rtl-top; then runs+=("rtl-top $p $scw"); fi
   if [ -n "$base" ] && has_rtl "$base" "$p"; then runs+=("rtl $p $base"); fi
   if [ -n "$base" ] && has_rtl "$base" "$p" rtl-top; then runs+=("rtl-top $p $base"); fi
@@ -47,10 +49,13 @@ for ((r = 1; r <= repeats; r++)); do
     read -r engine p bin <<<"$run"
     key="$engine $p $([ "$bin" = "$scw" ] && echo this || echo baseline)"
     t0="$(date +%s.%N)"
-    skip=1
-    [ "$engine" = rtl-all ] && skip=0
+    skip=1 as="$engine" more=()
+    case "$engine" in
+      rtl-all) skip=0 as=rtl ;;
+      rtl-2t) as=rtl more=(--threads 2) ;;
+    esac
     SCW_SKIP_IDLE="$skip" "$bin" sim --config thesis --ppc "$p" --frames "$frames" \
-      --engine "${engine%-all}" --json "$work/run.json" >/dev/null 2>&1
+      --engine "$as" "${more[@]}" --json "$work/run.json" >/dev/null 2>&1
     t1="$(date +%s.%N)"
     s="$(awk -v a="$t0" -v b="$t1" 'BEGIN {print b - a}')"
     secs[$key]+="$s "
@@ -79,6 +84,12 @@ for p in 1 2 4; do
     echo "P = $p: the same report (cycles, timing, results) with and without skipping"
   else
     echo "P = $p: the reports DIFFER with and without skipping" >&2
+    exit 1
+  fi
+  if cmp -s <(grep -v '"threads"' "$a") <(grep -v '"threads"' "$work/rtl-2t_${p}_this.json"); then
+    echo "P = $p: the same report on two threads as on one"
+  else
+    echo "P = $p: the reports DIFFER on two threads and on one" >&2
     exit 1
   fi
   # Said, not required: a baseline of another revision may rightly report other results.

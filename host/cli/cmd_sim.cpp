@@ -128,6 +128,10 @@ void add_sim_command(CLI::App& app) {
   cmd->add_option("--synth-json", s.synth_json,
                   "a `scw synth --json` report of the same --config and --ppc: also give T_P and "
                   "T_L in ms at the estimated Fmax of its slowest module");
+  cmd->add_option("--threads", s.threads,
+                  "1, or 2: the chain's disparity and road stages step on a second thread, the "
+                  "same results clock for clock (engines cpp and rtl; docs/sim.md)")
+      ->capture_default_str();
   cmd->add_flag("--reference", s.reference,
                 "also run the floating-point chain on the pair and compare the frame result");
   add_refused_shard_option(cmd, kSimNoShard);

@@ -183,9 +183,9 @@ SimRun run(const SimOptions& o, std::ostream& log, int width, int height, int dm
            const sim::PipelineEngines& built = sim::PipelineEngines::all(sim::Engine::rtl)) {
   constexpr int P = Build::kPpc;
   Prepared p = prepare<Build>(o, log, width, height, dmin_default, num_disp_default);
-  sim::PipelineChain<Build, Rtl> chain(p.setup, engines_of(o, built),
-                                       frames_of<P>(p.left, o.frames),
-                                       frames_of<P>(p.right, o.frames), p.pattern, p.pattern);
+  sim::PipelineChain<Build, Rtl> chain(
+      p.setup, engines_of(o, built), frames_of<P>(p.left, o.frames),
+      frames_of<P>(p.right, o.frames), p.pattern, p.pattern, o.threads);
   chain.run(static_cast<std::size_t>(o.frames), p.max_cycles,
             [&](std::int64_t c, std::size_t done) { progress(log, c, done, o.frames); });
   p.s.cycles = chain.cycles();
@@ -275,6 +275,12 @@ SimRun run_sim(const SimOptions& o, std::ostream& log) {
   if (o.frames < 1) throw std::invalid_argument("--frames must be at least 1");
   if (o.ppc != 1 && o.ppc != 2 && o.ppc != 4)
     throw std::invalid_argument("--ppc " + std::to_string(o.ppc) + ": use 1, 2 or 4");
+  if (o.threads != 1 && o.threads != 2)
+    throw std::invalid_argument("--threads " + std::to_string(o.threads) + ": use 1 or 2");
+  if (o.threads != 1 && o.engine == "rtl-top")
+    throw std::invalid_argument(
+        "--threads 2 splits the chain of blocks over two threads; the rtl-top engine is one "
+        "Verilated model on one thread: use --engine rtl, or --threads 1");
   if (o.engine == "rtl-top" && !o.rtl_stages.empty())
     throw std::invalid_argument(
         "--rtl-stages picks blocks of --engine cpp; the rtl-top engine "
@@ -342,6 +348,7 @@ nlohmann::json sim_json(const SimRun& r) {
           {"engine", r.engine},
           {"stalls", o.stalls},
           {"frames", o.frames},
+          {"threads", o.threads},
           {"cycles", r.cycles},
           {"period_cycles", t.period},
           {"period_ms", ms(t.period)},

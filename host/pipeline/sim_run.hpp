@@ -34,6 +34,7 @@ struct SimOptions {
   std::string stalls = "none";  // sim::StallPattern::parse
   std::string synth_json;       // a `scw synth --json` report of the same build: ms at its Fmax
   bool reference = false;       // also run the floating-point chain and compare
+  int threads = 1;              // 2: the chain's disparity and road stages on a second thread
 };
 
 /// The floating-point chain's frame result on the same pair, and whether the pipeline's last

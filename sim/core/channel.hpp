@@ -82,10 +82,10 @@ class Fifo : public ChannelBase {
     return q_.front();
   }
   void push(const T& v) {
-    if (!can_push() || pending_push_)
+    if (!can_push() || push_.pending)
       throw std::logic_error("FIFO '" + name_ + "': push without space (check can_push)");
-    pending_push_ = true;
-    pushed_ = v;
+    push_.pending = true;
+    push_.beat = v;
   }
   /// Keeps a copy of every beat pushed from now on (a probe on the link, for pictures of a
   /// stage's output); off by default.
@@ -94,33 +94,49 @@ class Fifo : public ChannelBase {
   /// Forgets what was recorded so far (a long run takes its pictures frame by frame).
   void clear_recorded() { recorded_.clear(); }
   void pop() {
-    if (!can_pop() || pending_pop_)
+    if (!can_pop() || pop_.pending)
       throw std::logic_error("FIFO '" + name_ + "': pop of an empty FIFO (check can_pop)");
-    pending_pop_ = true;
+    pop_.pending = true;
   }
 
   void commit(std::int64_t cycle) override {
-    moved_ = pending_pop_ || pending_push_;
-    if (pending_pop_) {
+    if (!pop_.pending && !push_.pending) {
+      // Most FIFOs are idle most cycles: nothing is written then, so a FIFO between two threads
+      // (Simulator's lanes) keeps its cache lines where they are.
+      if (moved_) moved_ = false;
+      return;
+    }
+    moved_ = true;
+    if (pop_.pending) {
       pop_side_.note(*this, q_.front(), cycle, &FrameStamp::first_pop, &FrameStamp::last_pop);
       q_.pop_front();
       ++pops_;
     }
-    if (pending_push_) {
-      push_side_.note(*this, pushed_, cycle, &FrameStamp::first_push, &FrameStamp::last_push);
-      if (recording_) recorded_.push_back(pushed_);
-      q_.push_back(pushed_);
+    if (push_.pending) {
+      push_side_.note(*this, push_.beat, cycle, &FrameStamp::first_push, &FrameStamp::last_push);
+      if (recording_) recorded_.push_back(push_.beat);
+      q_.push_back(push_.beat);
       ++pushes_;
     }
-    pending_pop_ = pending_push_ = false;
+    pop_.pending = false;
+    push_.pending = false;
     if (size() > max_occupancy_) max_occupancy_ = size();
   }
 
  private:
   std::deque<T> q_;
-  T pushed_{};
-  bool pending_push_ = false;
-  bool pending_pop_ = false;
+  // What the producer and the consumer write in a cycle, each on cache lines of its own: with
+  // the two on different threads (Simulator's lanes) neither then takes the other's lines away
+  // while both evaluate.
+  struct alignas(64) PushSide {
+    T beat{};
+    bool pending = false;
+  };
+  struct alignas(64) PopSide {
+    bool pending = false;
+  };
+  PushSide push_;
+  PopSide pop_;
   bool recording_ = false;
   std::vector<T> recorded_;
   /// Frame tracking of one end (push or pop) of the FIFO.

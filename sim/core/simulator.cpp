@@ -4,17 +4,87 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <map>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace scw::sim {
 
-void Simulator::step() {
-  for (auto& c : components_) c->eval();
-  for (auto& c : components_) c->tick();
+Simulator::Simulator(int threads) {
+  if (threads != 1 && threads != 2)
+    throw std::invalid_argument("the simulator steps its components on 1 or 2 threads, not " +
+                                std::to_string(threads));
+  if (threads == 2) {
+    lane_ = std::make_unique<LaneThread>();
+    lane_step_ = [this] { lane_moved_ = step_lane(1); };
+  }
+}
+
+Simulator::~Simulator() {
+  if (!lane_) return;
+  // Lane 1's components are unmade by the thread that made them, then the thread stops.
+  lane_->call([this] {
+    for (auto& c : components_)
+      if (std::find(lanes_[1].begin(), lanes_[1].end(), c.get()) != lanes_[1].end()) c.reset();
+  });
+  lane_.reset();
+}
+
+bool Simulator::step_lane(int lane) {
+  for (auto* c : lanes_[lane]) c->eval();
+  for (auto* c : lanes_[lane]) c->tick();
   bool moved = false;
-  for (auto& ch : channels_) {
+  for (auto* ch : own_fifos_[lane]) {
     ch->commit(cycle_);
     moved = moved || ch->moved();
+  }
+  return moved;
+}
+
+void Simulator::assign_fifos() {
+  std::map<const ChannelBase*, unsigned> users;  // bit k: a component of lane k
+  for (int k = 0; k < 2; ++k)
+    for (const auto* c : lanes_[k]) {
+      for (const auto* ch : c->inputs()) users[ch] |= 1u << k;
+      for (const auto* ch : c->outputs()) users[ch] |= 1u << k;
+    }
+  for (auto& v : own_fifos_) v.clear();
+  shared_fifos_.clear();
+  for (auto& ch : channels_) {
+    const unsigned u = users[ch.get()];
+    if (u == 3u)
+      shared_fifos_.push_back(ch.get());
+    else
+      own_fifos_[u == 2u ? 1 : 0].push_back(ch.get());
+  }
+  assigned_ = components_.size();
+}
+
+void Simulator::step() {
+  if (assigned_ != components_.size() ||
+      channels_.size() != own_fifos_[0].size() + own_fifos_[1].size() + shared_fifos_.size())
+    assign_fifos();
+  bool moved = false;
+  if (lane_) {
+    lane_->start(lane_step_);
+    try {
+      moved = step_lane(0);
+    } catch (...) {
+      try {
+        lane_->wait();  // the other thread finishes its part before this one's error leaves
+      } catch (...) {
+      }
+      throw;
+    }
+    lane_->wait();
+    moved = moved || lane_moved_;
+    for (auto* ch : shared_fifos_) {
+      ch->commit(cycle_);
+      moved = moved || ch->moved();
+    }
+  } else {
+    moved = step_lane(0);
   }
   quiet_ = moved ? 0 : quiet_ + 1;
   ++cycle_;

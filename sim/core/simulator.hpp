@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sim/core/channel.hpp"
+#include "sim/core/lane_thread.hpp"
 
 namespace scw::sim {
 
@@ -94,6 +95,16 @@ struct SimReport {
 
 class Simulator {
  public:
+  /// `threads` 2: the components added to lane 1 (add_to) step on a second thread, beside the
+  /// rest; every result and report is the same as with 1, since FIFOs commit after every
+  /// component has ticked (docs/sim.md, "Two threads").
+  explicit Simulator(int threads = 1);
+  ~Simulator();
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
+
+  int threads() const { return lane_ ? 2 : 1; }
+
   /// A new bounded FIFO owned by the simulator.
   template <typename T>
   Fifo<T>& fifo(std::string name, int depth) {
@@ -105,10 +116,20 @@ class Simulator {
   /// A new component owned by the simulator; constructor arguments are forwarded.
   template <typename C, typename... Args>
   C& add(Args&&... args) {
-    auto c = std::make_unique<C>(std::forward<Args>(args)...);
-    C& ref = *c;
-    components_.push_back(std::move(c));
-    return ref;
+    return keep(std::make_unique<C>(std::forward<Args>(args)...), 0);
+  }
+  /// A new component on `lane` (0 or 1), made by `make()` (a std::unique_ptr to it) on the
+  /// thread that will step it. With one thread, lane 1 is lane 0.
+  template <typename Make>
+  auto& add_to(int lane, Make&& make) {
+    if (lane != 0 && lane != 1) throw std::invalid_argument("a component's lane is 0 or 1");
+    decltype(make()) c;
+    if (lane == 1 && lane_) {
+      lane_->call([&] { c = make(); });
+    } else {
+      c = make();
+    }
+    return keep(std::move(c), lane);
   }
 
   /// One clock cycle: every component evaluates, every component ticks, every FIFO commits.
@@ -127,8 +148,29 @@ class Simulator {
   std::string deadlock_report(std::vector<std::string>* stuck = nullptr) const;
 
  private:
+  template <typename C>
+  C& keep(std::unique_ptr<C> c, int lane) {
+    C& ref = *c;
+    lanes_[lane_ ? lane : 0].push_back(&ref);
+    components_.push_back(std::move(c));
+    return ref;
+  }
+  /// A lane's part of a cycle: its components evaluate and tick, and the FIFOs only they use
+  /// commit (on the thread that touched them, so their cache lines stay with it); whether any
+  /// of those moved.
+  bool step_lane(int lane);
+  /// Which FIFOs each lane commits, and which the first commits after both lanes are done.
+  void assign_fifos();
+
   std::vector<std::unique_ptr<ChannelBase>> channels_;
-  std::vector<std::unique_ptr<Component>> components_;
+  std::vector<std::unique_ptr<Component>> components_;  // in the order added (reports)
+  std::vector<Component*> lanes_[2];                    // what each thread steps
+  std::vector<ChannelBase*> own_fifos_[2];              // used by one lane's components only
+  std::vector<ChannelBase*> shared_fifos_;              // a producer and a consumer apart
+  std::size_t assigned_ = 0;                            // components when assign_fifos ran
+  std::unique_ptr<LaneThread> lane_;                    // lane 1's thread, with 2 threads
+  std::function<void()> lane_step_;                     // lane 1's part of a cycle
+  bool lane_moved_ = false;                             // step_lane(1)'s answer
   std::int64_t cycle_ = 0;
   std::int64_t quiet_ = 0;
   std::int64_t deadlock_window_ = 65536;

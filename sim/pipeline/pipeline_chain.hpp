@@ -76,10 +76,12 @@ class PipelineChain {
   /// `left` and `right` are the raw frames' beats back to back; `in` stalls the two inputs
   /// (the right one with another seed, so they do not idle in step), `out` the result sink.
   /// Throws std::invalid_argument for a setup a stage cannot take, or an engine not built.
-  PipelineChain(const PipelineSetup& s, const PipelineEngines& engines,
-                std::vector<raw_beat> left, std::vector<raw_beat> right,
-                const StallPattern& in = {}, const StallPattern& out = {})
-      : setup_(s) {
+  /// `threads` 2 steps the disparity and road stages on a second thread (kLane): the same
+  /// results and reports, clock for clock (docs/sim.md, "Two threads").
+  PipelineChain(const PipelineSetup& s, const PipelineEngines& engines, std::vector<raw_beat> left,
+                std::vector<raw_beat> right, const StallPattern& in = {},
+                const StallPattern& out = {}, int threads = 1)
+      : setup_(s), sim_(threads) {
     check_setup<Build>(s);
     const PipelineDepths& d = s.depths;
     auto& raw_l = sim_.fifo<raw_beat>("raw_left", d.raw);
@@ -276,19 +278,29 @@ class PipelineChain {
     }
   }
 
+  /// The second thread's share of a cycle, with two: the disparity stage, the most costly block
+  /// (45 % of a thesis-size run at P = 4, all RTL), and the road stage it feeds. Each thread
+  /// then has about half the work and four FIFOs cross between them; with the right camera's
+  /// blocks on it too, it had more than half (docs/sim.md, "Two threads").
+  static constexpr int kLane = 1;
+
   void add_disparity(Engine e) {
     using Params = typename Build::disparity;
     const auto cfg = setup_.disparity_config();
     if (e == Engine::cpp) {
-      sim_.add<JoinComponent<DisparityModel<Params>>>("disparity", DisparityModel<Params>(cfg),
-                                                      *rect_l_, *rect_r_, *disp_);
+      sim_.add_to(kLane, [&] {
+        return std::make_unique<JoinComponent<DisparityModel<Params>>>(
+            "disparity", DisparityModel<Params>(cfg), *rect_l_, *rect_r_, *disp_);
+      });
       return;
     }
     using VM = typename Rtl::disparity;
     if constexpr (kBuilt<VM>) {
-      sim_.add<JoinComponent<DisparityRtl<VM, Params>>>(
-          "disparity", make_disparity_rtl<VM, Params>("disparity", cfg), *rect_l_, *rect_r_,
-          *disp_);
+      sim_.add_to(kLane, [&] {
+        return std::make_unique<JoinComponent<DisparityRtl<VM, Params>>>(
+            "disparity", make_disparity_rtl<VM, Params>("disparity", cfg), *rect_l_, *rect_r_,
+            *disp_);
+      });
     } else {
       not_built("disparity");
     }
@@ -300,14 +312,18 @@ class PipelineChain {
                       std::is_same_v<typename Params::out_beat, label_beat>,
                   "the road stage sits between the disparity and labelling stages");
     if (e == Engine::cpp) {
-      sim_.add<SideComponent<RoadModel<Params>>>("road", RoadModel<Params>(setup_.road), *disp_,
-                                                 *road_, *lines_);
+      sim_.add_to(kLane, [&] {
+        return std::make_unique<SideComponent<RoadModel<Params>>>(
+            "road", RoadModel<Params>(setup_.road), *disp_, *road_, *lines_);
+      });
       return;
     }
     using VM = typename Rtl::road;
     if constexpr (kBuilt<VM>) {
-      sim_.add<SideComponent<RoadSideRtl<VM, Params>>>(
-          "road", RoadSideRtl<VM, Params>("road", setup_.road), *disp_, *road_, *lines_);
+      sim_.add_to(kLane, [&] {
+        return std::make_unique<SideComponent<RoadSideRtl<VM, Params>>>(
+            "road", RoadSideRtl<VM, Params>("road", setup_.road), *disp_, *road_, *lines_);
+      });
     } else {
       not_built("road");
     }

@@ -259,6 +259,30 @@ TEST_CASE("20 frames under random input gaps and output backpressure: same resul
   SECTION("P = 2: the labelling stage's two lanes") { check_stalls<2>(); }
 }
 
+TEST_CASE(
+    "two threads: the chain of Verilated blocks and of C++ models report what one thread does",
+    "[pipeline][rtl][sim]") {
+  const int w = 48, h = 24, frames = 4;
+  const auto [left, right] = scene_beats<1>(w, h, frames);
+  const auto setup = small_setup(w, h, true);
+  const auto stalls = scw::sim::StallPattern::parse("random:9");
+  for (const auto& engines :
+       {scw::sim::small_build::rtl_engines<1>(), PipelineEngines::all(Engine::cpp)}) {
+    Chain<1> one(setup, engines, left, right, stalls, stalls, 1);
+    one.run(frames, 2000000);
+    Chain<1> two(setup, engines, left, right, stalls, stalls, 2);
+    REQUIRE(two.simulator().threads() == 2);
+    two.run(frames, 2000000);
+    REQUIRE(one.results().size() == static_cast<std::size_t>(frames));
+    CHECK(two.results() == one.results());
+    CHECK(result_cycles<1>(two) == result_cycles<1>(one));
+    CHECK(two.object_table() == one.object_table());
+    // Every FIFO's beats and fullest moment, every block's first and last beat of every frame.
+    CHECK(two.report().text() == one.report().text());
+    CHECK(two.timing().period == one.timing().period);
+  }
+}
+
 // Also under random RAM contents (x-seed1): the rows a frame cut short right after reset never
 // sent read 0 in the rectifier (its blank row slots), not whatever the RAM held, so the RTL and
 // the C++ model agree on the flagged frame too.
