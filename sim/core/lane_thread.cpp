@@ -36,7 +36,7 @@ LaneThread::~LaneThread() {
 }
 
 void LaneThread::start(const std::function<void()>& job) {
-  job_ = &job;
+  job_.store(&job, std::memory_order_relaxed);
   // A plain store: an atomic add here (a locked instruction) waited for the counter's cache
   // line to come back from the spinning worker, and was 6 % of a thesis-size run. A worker that
   // fell asleep just as this store was made and is not woken here wakes within kNap.
@@ -76,13 +76,13 @@ void LaneThread::loop() {
       while (posted_.load(std::memory_order_acquire) == seen) wake_.wait_for(lock, kNap);
       sleeping_.store(false, std::memory_order_relaxed);
     }
-    ++seen;
+    ++seen;  // one job at a time, even if more were started meanwhile
     if (stop_) {
       done_.store(seen, std::memory_order_release);
       return;
     }
     try {
-      (*job_)();
+      (*job_.load(std::memory_order_relaxed))();
     } catch (...) {
       error_ = std::current_exception();
     }

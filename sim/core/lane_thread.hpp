@@ -28,7 +28,9 @@ class LaneThread {
   LaneThread(const LaneThread&) = delete;
   LaneThread& operator=(const LaneThread&) = delete;
 
-  /// Starts `job` on the worker; it must live until wait() returns.
+  /// Starts `job` on the worker, after the one it is running if any (then `job` must be that
+  /// one: another is started only when the worker is idle, after wait()); it must live until
+  /// wait() returns.
   void start(const std::function<void()>& job);
   /// Waits for the job start() gave, and rethrows what it threw.
   void wait();
@@ -46,7 +48,7 @@ class LaneThread {
   alignas(64) std::atomic<std::uint64_t> posted_{0};  // jobs started (main thread)
   alignas(64) std::atomic<std::uint64_t> done_{0};    // jobs finished (worker)
   alignas(64) std::atomic<bool> sleeping_{false};
-  const std::function<void()>* job_ = nullptr;
+  std::atomic<const std::function<void()>*> job_{nullptr};
   std::exception_ptr error_;
   bool stop_ = false;
   std::mutex mutex_;

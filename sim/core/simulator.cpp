@@ -17,12 +17,16 @@ Simulator::Simulator(int threads) {
                                 std::to_string(threads));
   if (threads == 2) {
     lane_ = std::make_unique<LaneThread>();
-    lane_step_ = [this] { lane_moved_ = step_lane(1); };
+    lane_step_ = [this] { lane_cycle(); };
   }
 }
 
 Simulator::~Simulator() {
   if (!lane_) return;
+  try {
+    settle_lane();
+  } catch (...) {  // already reported to whoever stepped it
+  }
   // Lane 1's components are unmade by the thread that made them, then the thread stops.
   lane_->call([this] {
     for (auto& c : components_)
@@ -31,77 +35,199 @@ Simulator::~Simulator() {
   lane_.reset();
 }
 
-bool Simulator::step_lane(int lane) {
+bool Simulator::step_lane(int lane, std::int64_t cycle) {
   for (auto* c : lanes_[lane]) c->eval();
   for (auto* c : lanes_[lane]) c->tick();
   bool moved = false;
   for (auto* ch : own_fifos_[lane]) {
-    ch->commit(cycle_);
+    ch->commit(cycle);
     moved = moved || ch->moved();
   }
+  for (auto* ch : push_ends_[lane]) moved = ch->commit_push(cycle) || moved;
+  for (auto* ch : pop_ends_[lane]) moved = ch->commit_pop(cycle) || moved;
   return moved;
 }
 
+void Simulator::see_lane(int lane, std::int64_t cycle) {
+  for (auto* ch : push_ends_[lane]) ch->see_pops(cycle);
+  for (auto* ch : pop_ends_[lane]) ch->see_pushes(cycle);
+}
+
+/// Spins until `a` reaches `n`: the other lane has committed the cycle.
+static void await(const std::atomic<std::int64_t>& a, std::int64_t n) {
+  while (a.load(std::memory_order_acquire) < n) {
+  }
+}
+
+void Simulator::lane_cycle() {
+  const std::int64_t c = lane_next_++;
+  if (lane_error_) return;  // a cycle started before lane 0 saw the error: lane 0 lets it pass
+  try {
+    lane_moved_[c & 1] = step_lane(1, c);
+  } catch (...) {
+    lane_error_ = std::current_exception();
+  }
+  done_[1].store(c + 1, std::memory_order_release);
+  await(done_[0], c + 1);
+  if (!lane_error_) see_lane(1, c);
+}
+
 void Simulator::assign_fifos() {
-  std::map<const ChannelBase*, unsigned> users;  // bit k: a component of lane k
+  settle_lane();
+  std::map<const ChannelBase*, unsigned> feeds, drains;  // bit k: a component of lane k
   for (int k = 0; k < 2; ++k)
     for (const auto* c : lanes_[k]) {
-      for (const auto* ch : c->inputs()) users[ch] |= 1u << k;
-      for (const auto* ch : c->outputs()) users[ch] |= 1u << k;
+      for (const auto* ch : c->inputs()) drains[ch] |= 1u << k;
+      for (const auto* ch : c->outputs()) feeds[ch] |= 1u << k;
     }
-  for (auto& v : own_fifos_) v.clear();
-  shared_fifos_.clear();
+  for (int k = 0; k < 2; ++k) {
+    own_fifos_[k].clear();
+    push_ends_[k].clear();
+    pop_ends_[k].clear();
+  }
   for (auto& ch : channels_) {
-    const unsigned u = users[ch.get()];
-    if (u == 3u)
-      shared_fifos_.push_back(ch.get());
-    else
-      own_fifos_[u == 2u ? 1 : 0].push_back(ch.get());
+    const unsigned f = feeds[ch.get()], d = drains[ch.get()];
+    const bool split = (f | d) == 3u && (f == 1u || f == 2u) && (d == 1u || d == 2u);
+    ch->split(split);
+    if (split) {
+      push_ends_[f == 2u ? 1 : 0].push_back(ch.get());
+      pop_ends_[d == 2u ? 1 : 0].push_back(ch.get());
+    } else {
+      own_fifos_[(f | d) == 2u ? 1 : 0].push_back(ch.get());
+    }
   }
   assigned_ = components_.size();
+  assigned_fifos_ = channels_.size();
+}
+
+void Simulator::settle_lane() {
+  if (lane_) lane_->wait();
 }
 
 void Simulator::step() {
-  if (assigned_ != components_.size() ||
-      channels_.size() != own_fifos_[0].size() + own_fifos_[1].size() + shared_fifos_.size())
-    assign_fifos();
-  bool moved = false;
-  if (lane_) {
-    lane_->start(lane_step_);
-    try {
-      moved = step_lane(0);
-    } catch (...) {
-      try {
-        lane_->wait();  // the other thread finishes its part before this one's error leaves
-      } catch (...) {
-      }
-      throw;
-    }
-    lane_->wait();
-    moved = moved || lane_moved_;
-    for (auto* ch : shared_fifos_) {
-      ch->commit(cycle_);
-      moved = moved || ch->moved();
-    }
-  } else {
-    moved = step_lane(0);
+  step_once();
+  settle_lane();
+}
+
+void Simulator::step_once() {
+  if (assigned_ != components_.size() || assigned_fifos_ != channels_.size()) assign_fifos();
+  const std::int64_t c = cycle_;
+  if (!lane_) {
+    const bool moved = step_lane(0, c);
+    quiet_ = moved ? 0 : quiet_ + 1;
+    ++cycle_;
+    return;
   }
-  quiet_ = moved ? 0 : quiet_ + 1;
+  settle_lane();
+  lane_next_ = c;
+  lane_->start(lane_step_);
+  bool moved = false;
+  try {
+    moved = step_lane(0, c);
+  } catch (...) {
+    done_[0].store(c + 1, std::memory_order_release);  // lane 1 finishes its cycle first
+    try {
+      settle_lane();
+    } catch (...) {
+    }
+    lane_error_ = nullptr;  // lane 0's error is the one reported
+    throw;
+  }
+  done_[0].store(c + 1, std::memory_order_release);
   ++cycle_;
+  meet(c, moved);
+}
+
+void Simulator::meet(std::int64_t c, bool moved) {
+  await(done_[1], c + 1);
+  if (lane_error_) {
+    // Lane 1 may have started the next cycle already; let it through, then report.
+    done_[0].store(c + 2, std::memory_order_release);
+    try {
+      settle_lane();
+    } catch (...) {
+    }
+    std::exception_ptr e = lane_error_;
+    lane_error_ = nullptr;
+    std::rethrow_exception(e);
+  }
+  moved = lane_moved_[c & 1] || moved;
+  see_lane(0, c);
+  quiet_ = moved ? 0 : quiet_ + 1;
+}
+
+void Simulator::deadlock() {
+  settle_lane();
+  std::vector<std::string> stuck;
+  const std::string text = deadlock_report(&stuck);
+  throw DeadlockError(text, stuck);
 }
 
 void Simulator::run_until(const std::function<bool()>& done, std::int64_t max_cycles) {
   const std::int64_t limit = cycle_ + max_cycles;
+  if (lane_) return run_two(done, limit);
   while (!done()) {
-    if (quiet_ >= deadlock_window_) {
-      std::vector<std::string> stuck;
-      const std::string text = deadlock_report(&stuck);
-      throw DeadlockError(text, stuck);
-    }
+    if (quiet_ >= deadlock_window_) deadlock();
     if (cycle_ >= limit)
       throw std::runtime_error("simulation did not finish within " + std::to_string(max_cycles) +
                                " cycles (cycle " + std::to_string(cycle_) + ")");
-    step();
+    step_once();
+  }
+}
+
+void Simulator::run_two(const std::function<bool()>& done, std::int64_t limit) {
+  const std::int64_t max_cycles = limit - cycle_;
+  auto over = [&] {
+    return std::runtime_error("simulation did not finish within " + std::to_string(max_cycles) +
+                              " cycles (cycle " + std::to_string(cycle_) + ")");
+  };
+  if (assigned_ != components_.size() || assigned_fifos_ != channels_.size()) assign_fifos();
+  settle_lane();
+  if (done()) return;
+  if (quiet_ >= deadlock_window_) deadlock();
+  if (cycle_ >= limit) throw over();
+  lane_next_ = cycle_;
+  lane_->start(lane_step_);
+  for (;;) {
+    const std::int64_t c = cycle_;
+    bool moved = false;
+    try {
+      moved = step_lane(0, c);
+    } catch (...) {
+      done_[0].store(c + 1, std::memory_order_release);
+      try {
+        settle_lane();
+      } catch (...) {
+      }
+      lane_error_ = nullptr;  // lane 0's error is the one reported
+      throw;
+    }
+    done_[0].store(c + 1, std::memory_order_release);
+    ++cycle_;
+    // Lane 0's part of cycle c is all done() may read: ask it now, and start lane 1's next
+    // cycle before meeting it, unless a deadlock could be declared after this cycle (it is
+    // decided on both lanes' moves) or the limit is reached.
+    bool go_on = false;
+    try {
+      go_on = !done();
+    } catch (...) {
+      try {
+        meet(c, moved);
+        settle_lane();
+      } catch (...) {
+      }
+      lane_error_ = nullptr;
+      throw;
+    }
+    const bool ahead = go_on && quiet_ + 1 < deadlock_window_ && cycle_ < limit;
+    if (ahead) lane_->start(lane_step_);
+    meet(c, moved);
+    if (ahead) continue;
+    settle_lane();
+    if (!go_on) return;
+    if (quiet_ >= deadlock_window_) deadlock();
+    if (cycle_ >= limit) throw over();
+    lane_->start(lane_step_);
   }
 }
 

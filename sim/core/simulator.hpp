@@ -3,7 +3,9 @@
 // FIFO occupancy, per-frame stage timestamps and deadlocks by name.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -135,7 +137,8 @@ class Simulator {
   /// One clock cycle: every component evaluates, every component ticks, every FIFO commits.
   void step();
   /// Steps until `done()` holds. Throws DeadlockError when no FIFO moves for the deadlock
-  /// window, std::runtime_error after `max_cycles`.
+  /// window, std::runtime_error after `max_cycles`. With two threads, `done()` is asked while
+  /// lane 1 may still be taking in the cycle: it reads only lane 0's components.
   void run_until(const std::function<bool()>& done, std::int64_t max_cycles);
 
   std::int64_t cycle() const { return cycle_; }
@@ -155,22 +158,45 @@ class Simulator {
     components_.push_back(std::move(c));
     return ref;
   }
-  /// A lane's part of a cycle: its components evaluate and tick, and the FIFOs only they use
-  /// commit (on the thread that touched them, so their cache lines stay with it); whether any
-  /// of those moved.
-  bool step_lane(int lane);
-  /// Which FIFOs each lane commits, and which the first commits after both lanes are done.
+  /// A lane's part of a cycle: its components evaluate and tick, the FIFOs only they use commit
+  /// and so do the lane's ends of the split FIFOs (ChannelBase::split), on the thread that
+  /// touched them; whether a beat moved.
+  bool step_lane(int lane, std::int64_t cycle);
+  /// The lane's ends of the split FIFOs take in the other lane's part of `cycle`.
+  void see_lane(int lane, std::int64_t cycle);
+  /// Lane 1's part of a cycle on its thread, meeting lane 0 after both have committed.
+  void lane_cycle();
+  /// One cycle; with two threads, lane 1 may still be taking in the cycle when it returns.
+  void step_once();
+  /// run_until on two threads: lane 0 decides on the next cycle as soon as its part of this one
+  /// is done, and lane 1 starts it without waiting to be told.
+  void run_two(const std::function<bool()>& done, std::int64_t limit);
+  /// Lane 0's part of the meeting point of `cycle`, whose own part moved beats or not.
+  void meet(std::int64_t cycle, bool moved);
+  [[noreturn]] void deadlock();
+  /// Waits until lane 1's thread is idle (rethrowing its error), before anything else touches
+  /// its components or FIFOs.
+  void settle_lane();
+  /// Which FIFOs each lane commits, and which are split between the two.
   void assign_fifos();
 
   std::vector<std::unique_ptr<ChannelBase>> channels_;
   std::vector<std::unique_ptr<Component>> components_;  // in the order added (reports)
   std::vector<Component*> lanes_[2];                    // what each thread steps
   std::vector<ChannelBase*> own_fifos_[2];              // used by one lane's components only
-  std::vector<ChannelBase*> shared_fifos_;              // a producer and a consumer apart
+  std::vector<ChannelBase*> push_ends_[2];              // split FIFOs fed from each lane
+  std::vector<ChannelBase*> pop_ends_[2];               // split FIFOs drained by each lane
   std::size_t assigned_ = 0;                            // components when assign_fifos ran
+  std::size_t assigned_fifos_ = 0;                      // FIFOs when assign_fifos ran
   std::unique_ptr<LaneThread> lane_;                    // lane 1's thread, with 2 threads
-  std::function<void()> lane_step_;                     // lane 1's part of a cycle
-  bool lane_moved_ = false;                             // step_lane(1)'s answer
+  std::function<void()> lane_step_;                     // lane_cycle
+  // The two lanes' meeting point: the cycles each has committed, on lines of their own.
+  alignas(64) std::atomic<std::int64_t> done_[2] = {};
+  // Lane 1's own: the next cycle it steps, whether a beat moved in each cycle (by its parity:
+  // lane 1 may be a cycle ahead when lane 0 reads it), what its components threw.
+  alignas(64) std::int64_t lane_next_ = 0;
+  bool lane_moved_[2] = {false, false};
+  std::exception_ptr lane_error_;
   std::int64_t cycle_ = 0;
   std::int64_t quiet_ = 0;
   std::int64_t deadlock_window_ = 65536;
