@@ -28,6 +28,7 @@ struct RunOptions {
   std::string pictures = "all", shard;
   app::RunOptions run;
   int segments = 0;
+  int threads = 1;
 };
 
 void run_chain(RunOptions& o, const CLI::App& cmd) {
@@ -43,13 +44,18 @@ void run_chain(RunOptions& o, const CLI::App& cmd) {
             << "), window " << o.run.window << ", d " << o.run.min_disp << " .. "
             << o.run.max_disp << ", " << o.mode << " mode"
             << (o.run.ground ? ", ground removal" : "") << "\n";
+  if (o.threads != 1 && o.engine != "rtl")
+    throw CLI::ValidationError("--threads",
+                               "two threads step the Verilated chain: give "
+                               "--engine rtl with it, or leave --threads at 1");
   if (o.engine == "rtl")
     std::cerr << "run: the stages run as Verilated RTL; the C++ models check every object and "
                  "frame result\n";
   const auto make_runner = [&] {  // at the first frame and where the state restarts
     app::StageEngine engine;
     if (o.engine == "rtl")
-      engine = host::pipeline::make_rtl_engine(o.run, first.cols, first.rows, camera.knots);
+      engine =
+          host::pipeline::make_rtl_engine(o.run, first.cols, first.rows, camera.knots, o.threads);
     return std::make_unique<app::Runner>(o.run, camera.maps, std::move(engine));
   };
   const app::SequenceSplit split{shard_of(o.shard), o.segments};
@@ -92,6 +98,11 @@ void add_run_command(CLI::App& app) {
                   "road), overlay, or none (objects.csv and results.jsonl are always written)")
       ->capture_default_str()
       ->check(CLI::IsMember({"none", "overlay", "all"}));
+  cmd->add_option("--threads", o->threads,
+                  "with --engine rtl: 1, or 2 to step the disparity and road stages on a second "
+                  "thread, the same results (docs/sim.md)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({1, 2}));
   cmd->add_option("--engine", o->engine,
                   "cpp: the stages' C++ models; rtl: every block Verilated (rectified pairs, a "
                   "built size: small up to 128 x 96, window 9, 16 disparities, 2x2 tiles)")

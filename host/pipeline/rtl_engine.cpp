@@ -50,7 +50,7 @@ void for_each_recorded_link(Chain& c, F&& f) {
 
 template <typename Build, typename Rtl>
 app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
-                            const KnotSource& knot_source) {
+                            const KnotSource& knot_source, int threads) {
   StageOptions so;
   so.mode = o.mode;
   so.edge_candidates = o.edge_candidates;
@@ -92,12 +92,13 @@ app::StageEngine engine_for(const app::RunOptions& o, int width, int height,
     std::size_t frames = 0;
   };
   auto state = std::make_shared<State>();
-  return [setup, width, height, state](const cv::Mat& l, const cv::Mat& r) {
+  return [setup, width, height, state, threads](const cv::Mat& l, const cv::Mat& r) {
     constexpr int P = Build::kPpc;
     State& st = *state;
     if (!st.chain) {
       st.chain = std::make_unique<Chain>(setup, sim::PipelineEngines::all(sim::Engine::rtl),
-                                         frames_beats<P>({l}), frames_beats<P>({r}));
+                                         frames_beats<P>({l}), frames_beats<P>({r}),
+                                         sim::StallPattern{}, sim::StallPattern{}, threads);
       for_each_recorded_link(*st.chain, [](auto& f) { f.record(true); });
       st.road = std::make_unique<road::RoadFilter>(setup.road);
     } else {
@@ -150,14 +151,16 @@ bool takes(const app::RunOptions& o, int width, int height) {
 }  // namespace
 
 app::StageEngine make_rtl_engine(const app::RunOptions& o, int width, int height,
-                                 const KnotSource& knots) {
+                                 const KnotSource& knots, int threads) {
+  if (threads != 1 && threads != 2)
+    throw std::invalid_argument("--threads " + std::to_string(threads) + ": use 1 or 2");
   using Small = hls::pipeline::SmallPipeline<1>;
   if (takes<Small>(o, width, height))
-    return engine_for<Small, sim::small_build::Rtl<1>::type>(o, width, height, knots);
+    return engine_for<Small, sim::small_build::Rtl<1>::type>(o, width, height, knots, threads);
   using Thesis = hls::pipeline::ThesisPipeline<1>;
 #if SCW_THESIS_RTL
   if (takes<Thesis>(o, width, height))
-    return engine_for<Thesis, sim::thesis_build::Rtl<1>::type>(o, width, height, knots);
+    return engine_for<Thesis, sim::thesis_build::Rtl<1>::type>(o, width, height, knots, threads);
   const std::string thesis = describe<Thesis>("thesis");
 #else
   const std::string thesis =

@@ -19,8 +19,8 @@ using KnotSource = std::function<rectify::StereoKnots(int grid_log2)>;
 /// and `o`'s window, disparity range and tiles. With `knots` the rectifiers run the
 /// calibration's grid maps, their lead planned from the expanded maps (rectify::plan_for_stage).
 /// Throws std::invalid_argument naming what each build takes when none does, or why the maps do
-/// not fit the build's row window.
+/// not fit the build's row window. `threads` 2 steps the chain on two threads (docs/sim.md).
 app::StageEngine make_rtl_engine(const app::RunOptions& o, int width, int height,
-                                 const KnotSource& knots = {});
+                                 const KnotSource& knots = {}, int threads = 1);
 
 }  // namespace scw::host::pipeline

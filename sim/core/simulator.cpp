@@ -121,6 +121,11 @@ void Simulator::step_once() {
   settle_lane();
   lane_next_ = c;
   lane_->start(lane_step_);
+  meet(c, lane0_part());
+}
+
+bool Simulator::lane0_part() {
+  const std::int64_t c = cycle_;
   bool moved = false;
   try {
     moved = step_lane(0, c);
@@ -135,7 +140,7 @@ void Simulator::step_once() {
   }
   done_[0].store(c + 1, std::memory_order_release);
   ++cycle_;
-  meet(c, moved);
+  return moved;
 }
 
 void Simulator::meet(std::int64_t c, bool moved) {
@@ -156,54 +161,40 @@ void Simulator::meet(std::int64_t c, bool moved) {
   quiet_ = moved ? 0 : quiet_ + 1;
 }
 
-void Simulator::deadlock() {
-  settle_lane();
-  std::vector<std::string> stuck;
-  const std::string text = deadlock_report(&stuck);
-  throw DeadlockError(text, stuck);
+void Simulator::check_progress(std::int64_t limit, std::int64_t max_cycles) {
+  if (quiet_ >= deadlock_window_) {
+    settle_lane();
+    std::vector<std::string> stuck;
+    const std::string text = deadlock_report(&stuck);
+    throw DeadlockError(text, stuck);
+  }
+  if (cycle_ >= limit)
+    throw std::runtime_error("simulation did not finish within " + std::to_string(max_cycles) +
+                             " cycles (cycle " + std::to_string(cycle_) + ")");
 }
 
 void Simulator::run_until(const std::function<bool()>& done, std::int64_t max_cycles) {
   const std::int64_t limit = cycle_ + max_cycles;
-  if (lane_) return run_two(done, limit);
+  if (lane_) return run_two(done, limit, max_cycles);
   while (!done()) {
-    if (quiet_ >= deadlock_window_) deadlock();
-    if (cycle_ >= limit)
-      throw std::runtime_error("simulation did not finish within " + std::to_string(max_cycles) +
-                               " cycles (cycle " + std::to_string(cycle_) + ")");
+    check_progress(limit, max_cycles);
     step_once();
   }
 }
 
-void Simulator::run_two(const std::function<bool()>& done, std::int64_t limit) {
-  const std::int64_t max_cycles = limit - cycle_;
-  auto over = [&] {
-    return std::runtime_error("simulation did not finish within " + std::to_string(max_cycles) +
-                              " cycles (cycle " + std::to_string(cycle_) + ")");
-  };
+void Simulator::run_two(const std::function<bool()>& done, std::int64_t limit,
+                        std::int64_t max_cycles) {
   if (assigned_ != components_.size() || assigned_fifos_ != channels_.size()) assign_fifos();
   settle_lane();
-  if (done()) return;
-  if (quiet_ >= deadlock_window_) deadlock();
-  if (cycle_ >= limit) throw over();
   lane_next_ = cycle_;
-  lane_->start(lane_step_);
-  for (;;) {
-    const std::int64_t c = cycle_;
-    bool moved = false;
-    try {
-      moved = step_lane(0, c);
-    } catch (...) {
-      done_[0].store(c + 1, std::memory_order_release);
-      try {
-        settle_lane();
-      } catch (...) {
-      }
-      lane_error_ = nullptr;  // lane 0's error is the one reported
-      throw;
+  if (done()) return;
+  for (bool started = false;;) {
+    if (!started) {  // lane 0 could not start this cycle ahead (below)
+      check_progress(limit, max_cycles);
+      lane_->start(lane_step_);
     }
-    done_[0].store(c + 1, std::memory_order_release);
-    ++cycle_;
+    const std::int64_t c = cycle_;
+    const bool moved = lane0_part();
     // Lane 0's part of cycle c is all done() may read: ask it now, and start lane 1's next
     // cycle before meeting it, unless a deadlock could be declared after this cycle (it is
     // decided on both lanes' moves) or the limit is reached.
@@ -219,15 +210,11 @@ void Simulator::run_two(const std::function<bool()>& done, std::int64_t limit) {
       lane_error_ = nullptr;
       throw;
     }
-    const bool ahead = go_on && quiet_ + 1 < deadlock_window_ && cycle_ < limit;
-    if (ahead) lane_->start(lane_step_);
+    started = go_on && quiet_ + 1 < deadlock_window_ && cycle_ < limit;
+    if (started) lane_->start(lane_step_);
     meet(c, moved);
-    if (ahead) continue;
-    settle_lane();
+    if (!started) settle_lane();
     if (!go_on) return;
-    if (quiet_ >= deadlock_window_) deadlock();
-    if (cycle_ >= limit) throw over();
-    lane_->start(lane_step_);
   }
 }
 

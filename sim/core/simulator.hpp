@@ -170,10 +170,13 @@ class Simulator {
   void step_once();
   /// run_until on two threads: lane 0 decides on the next cycle as soon as its part of this one
   /// is done, and lane 1 starts it without waiting to be told.
-  void run_two(const std::function<bool()>& done, std::int64_t limit);
+  void run_two(const std::function<bool()>& done, std::int64_t limit, std::int64_t max_cycles);
+  /// Lane 0's part of the cycle, lane 1's having been started: whether a beat moved in it.
+  bool lane0_part();
   /// Lane 0's part of the meeting point of `cycle`, whose own part moved beats or not.
   void meet(std::int64_t cycle, bool moved);
-  [[noreturn]] void deadlock();
+  /// Throws DeadlockError, or std::runtime_error at the cycle limit.
+  void check_progress(std::int64_t limit, std::int64_t max_cycles);
   /// Waits until lane 1's thread is idle (rethrowing its error), before anything else touches
   /// its components or FIFOs.
   void settle_lane();

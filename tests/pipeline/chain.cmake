@@ -34,12 +34,17 @@ foreach(p 1 2)
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/pipeline/sim_engines_agree.cmake
            WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endforeach()
-add_test(NAME "pipeline:cli sim refuses a third thread, and two for the one-model top"
+add_test(NAME "pipeline:cli sim and run refuse the thread counts they cannot use"
          COMMAND bash -c "! '$<TARGET_FILE:scw>' sim --config small --threads 3 2> cli_sim_t3.err && \
                           grep -q -- '--threads 3: use 1 or 2' cli_sim_t3.err && \
                           ! '$<TARGET_FILE:scw>' sim --config small --engine rtl-top --threads 2 \
                             2> cli_sim_t2.err && \
-                          grep -q 'one Verilated model on one thread' cli_sim_t2.err"
+                          grep -q 'one Verilated model on one thread' cli_sim_t2.err && \
+                          ! '$<TARGET_FILE:scw>' run --threads 2 --rectified --focal 615 \
+                            --baseline 0.1 --left '${PROJECT_SOURCE_DIR}/data/tsukuba/scene1.row3.col3.ppm' \
+                            --right '${PROJECT_SOURCE_DIR}/data/tsukuba/scene1.row3.col4.ppm' \
+                            --out-dir cli_run_t2 2> cli_run_t2.err && \
+                          grep -q 'give --engine rtl with it' cli_run_t2.err"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 add_test(NAME "pipeline:cli sim refuses an unknown configuration and names the two"
          COMMAND bash -c "! '$<TARGET_FILE:scw>' sim --config big 2> cli_sim_bad.err && \

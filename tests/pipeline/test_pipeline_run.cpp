@@ -106,8 +106,10 @@ TEST_CASE("run --ground with the Verilated stages equals the C++ models on a roa
   CHECK(removed > 1000);
 }
 
-TEST_CASE("the road stage over a sequence: one Verilated chain for all pairs equals the C++ models",
-          "[pipeline][app][rtl][road]") {
+TEST_CASE(
+    "the road stage over a sequence: one Verilated chain for all pairs, on one thread or two, "
+    "equals the C++ models",
+    "[pipeline][app][rtl][road]") {
   // The nominal road's horizon is the principal point's row, 47.5; the road's is 30, within the
   // 3 degrees of pitch a fit may move it: from the second frame on the road is found and removed.
   auto o = crop_options();
@@ -115,6 +117,8 @@ TEST_CASE("the road stage over a sequence: one Verilated chain for all pairs equ
   o.camera_height_m = 1.2;
   scw::app::Runner cpp(o, std::nullopt);
   scw::app::Runner rtl(o, std::nullopt, scw::host::pipeline::make_rtl_engine(o, kRoadW, kRoadH));
+  scw::app::Runner rtl2(o, std::nullopt,
+                        scw::host::pipeline::make_rtl_engine(o, kRoadW, kRoadH, {}, 2));
   o.road = false;
   scw::app::Runner plain(o, std::nullopt);
   std::vector<int> removed;
@@ -122,9 +126,13 @@ TEST_CASE("the road stage over a sequence: one Verilated chain for all pairs equ
     const auto [l, r] = road_pair(10 + frame);
     const auto a = cpp.process(l, r);
     const auto b = rtl.process(l, r);  // throws if the RTL's road, objects or result differ
+    const auto b2 = rtl2.process(l, r);
     CHECK(b.result == a.result);
     CHECK(cv::countNonZero(a.disparity != b.disparity) == 0);
+    CHECK(cv::countNonZero(a.disparity != b2.disparity) == 0);
     CHECK(scw::app::frame_json(static_cast<int>(frame), b) ==
+          scw::app::frame_json(static_cast<int>(frame), a));
+    CHECK(scw::app::frame_json(static_cast<int>(frame), b2) ==
           scw::app::frame_json(static_cast<int>(frame), a));
     const auto c = plain.process(l, r);
     removed.push_back(cv::countNonZero(c.disparity > 0) - cv::countNonZero(a.disparity > 0));
@@ -143,4 +151,6 @@ TEST_CASE("run --engine rtl refuses a frame no build takes and names the builds"
   o.window = 11;  // no build has it
   CHECK_THROWS_WITH(scw::host::pipeline::make_rtl_engine(o, 128, 96),
                     Catch::Contains("window 11") && Catch::Contains("thesis"));
+  CHECK_THROWS_WITH(scw::host::pipeline::make_rtl_engine(crop_options(), 128, 96, {}, 3),
+                    Catch::Contains("--threads 3: use 1 or 2"));
 }

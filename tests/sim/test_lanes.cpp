@@ -95,6 +95,35 @@ Run run_chain(int threads, Delay::Threads* seen = nullptr, int fail_at = -1) {
 
 }  // namespace
 
+/// source -> a (lane 0) -> b (lane 1) -> a FIFO nobody drains: it fills, everything behind it
+/// stops, and the run ends in a deadlock report; or, with a small `max_cycles`, at the limit.
+std::string run_stuck(int threads, std::int64_t max_cycles) {
+  scw::sim::Simulator s(threads);
+  s.set_deadlock_window(50);
+  std::vector<V> in(20, V{1, false});
+  auto& f0 = s.fifo<V>("in", 2);
+  auto& f1 = s.fifo<V>("a_to_b", 2);
+  auto& f2 = s.fifo<V>("undrained", 2);
+  s.add<scw::sim::Source<V>>("source", f0, in);
+  s.add<Delay>("a", f0, f1, 0, nullptr);
+  s.add_to(1, [&] { return std::make_unique<Delay>("b", f1, f2, 2, nullptr); });
+  try {
+    s.run_until([] { return false; }, max_cycles);
+  } catch (const std::exception& e) {
+    return e.what() + std::string(" at cycle ") + std::to_string(s.cycle());
+  }
+  return "no error";
+}
+
+TEST_CASE("two threads: the same deadlock report and cycle limit as one", "[sim][lanes]") {
+  const std::string one = run_stuck(1, 100000);
+  CHECK_THAT(one, Catch::Contains("deadlock at cycle") && Catch::Contains("undrained (2/2"));
+  CHECK(run_stuck(2, 100000) == one);
+  const std::string limit = run_stuck(1, 30);
+  CHECK_THAT(limit, Catch::Contains("did not finish within 30 cycles"));
+  CHECK(run_stuck(2, 30) == limit);
+}
+
 TEST_CASE("two threads: the same beats, cycles and report as one", "[sim][lanes]") {
   const Run one = run_chain(1), two = run_chain(2);
   REQUIRE(one.out.size() == 40);
