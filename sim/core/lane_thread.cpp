@@ -26,6 +26,16 @@ inline void relax() {
 }
 }  // namespace
 
+void await_count(const std::atomic<std::int64_t>& a, std::int64_t n) {
+  for (int spins = 0; a.load(std::memory_order_acquire) < n;) {
+    if (++spins < kSpins) {
+      relax();
+    } else {
+      std::this_thread::yield();
+    }
+  }
+}
+
 LaneThread::LaneThread() : thread_([this] { loop(); }) {}
 
 LaneThread::~LaneThread() {

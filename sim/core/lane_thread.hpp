@@ -13,6 +13,10 @@
 
 namespace scw::sim {
 
+/// Waits until `a` holds at least `n`: spins, then yields the core between looks once it has
+/// spun for long (more threads than free cores: the thread it waits for may not be running).
+void await_count(const std::atomic<std::int64_t>& a, std::int64_t n);
+
 /// One worker thread that runs a job when asked and says when it is done: the simulator hands
 /// it a cycle's evaluation and ticks of its components (Simulator::step), and their making and
 /// unmaking, since Verilator wants a model evaluated by the thread that built it.

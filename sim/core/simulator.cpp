@@ -53,12 +53,6 @@ void Simulator::see_lane(int lane, std::int64_t cycle) {
   for (auto* ch : pop_ends_[lane]) ch->see_pushes(cycle);
 }
 
-/// Spins until `a` reaches `n`: the other lane has committed the cycle.
-static void await(const std::atomic<std::int64_t>& a, std::int64_t n) {
-  while (a.load(std::memory_order_acquire) < n) {
-  }
-}
-
 void Simulator::lane_cycle() {
   const std::int64_t c = lane_next_++;
   if (lane_error_) return;  // a cycle started before lane 0 saw the error: lane 0 lets it pass
@@ -68,7 +62,7 @@ void Simulator::lane_cycle() {
     lane_error_ = std::current_exception();
   }
   done_[1].store(c + 1, std::memory_order_release);
-  await(done_[0], c + 1);
+  await_count(done_[0], c + 1);
   if (!lane_error_) see_lane(1, c);
 }
 
@@ -144,7 +138,7 @@ bool Simulator::lane0_part() {
 }
 
 void Simulator::meet(std::int64_t c, bool moved) {
-  await(done_[1], c + 1);
+  await_count(done_[1], c + 1);
   if (lane_error_) {
     // Lane 1 may have started the next cycle already; let it through, then report.
     done_[0].store(c + 2, std::memory_order_release);
