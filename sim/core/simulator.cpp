@@ -61,8 +61,8 @@ void Simulator::lane_cycle() {
   } catch (...) {
     lane_error_ = std::current_exception();
   }
-  done_[1].store(c + 1, std::memory_order_release);
-  await_count(done_[0], c + 1);
+  done_[1].cycles.store(c + 1, std::memory_order_release);
+  await_count(done_[0].cycles, c + 1);
   if (!lane_error_) see_lane(1, c);
 }
 
@@ -124,7 +124,7 @@ bool Simulator::lane0_part() {
   try {
     moved = step_lane(0, c);
   } catch (...) {
-    done_[0].store(c + 1, std::memory_order_release);  // lane 1 finishes its cycle first
+    done_[0].cycles.store(c + 1, std::memory_order_release);  // lane 1 finishes its cycle first
     try {
       settle_lane();
     } catch (...) {
@@ -132,16 +132,16 @@ bool Simulator::lane0_part() {
     lane_error_ = nullptr;  // lane 0's error is the one reported
     throw;
   }
-  done_[0].store(c + 1, std::memory_order_release);
+  done_[0].cycles.store(c + 1, std::memory_order_release);
   ++cycle_;
   return moved;
 }
 
 void Simulator::meet(std::int64_t c, bool moved) {
-  await_count(done_[1], c + 1);
+  await_count(done_[1].cycles, c + 1);
   if (lane_error_) {
     // Lane 1 may have started the next cycle already; let it through, then report.
-    done_[0].store(c + 2, std::memory_order_release);
+    done_[0].cycles.store(c + 2, std::memory_order_release);
     try {
       settle_lane();
     } catch (...) {

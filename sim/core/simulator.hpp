@@ -193,8 +193,12 @@ class Simulator {
   std::size_t assigned_fifos_ = 0;                      // FIFOs when assign_fifos ran
   std::unique_ptr<LaneThread> lane_;                    // lane 1's thread, with 2 threads
   std::function<void()> lane_step_;                     // lane_cycle
-  // The two lanes' meeting point: the cycles each has committed, on lines of their own.
-  alignas(64) std::atomic<std::int64_t> done_[2] = {};
+  // The two lanes' meeting point: the cycles each has committed, each on a line of its own
+  // (one lane writes it, the other reads it).
+  struct alignas(64) Committed {
+    std::atomic<std::int64_t> cycles{0};
+  };
+  Committed done_[2];
   // Lane 1's own: the next cycle it steps, whether a beat moved in each cycle (by its parity:
   // lane 1 may be a cycle ahead when lane 0 reads it), what its components threw.
   alignas(64) std::int64_t lane_next_ = 0;
