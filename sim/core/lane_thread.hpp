@@ -18,8 +18,8 @@ namespace scw::sim {
 void await_count(const std::atomic<std::int64_t>& a, std::int64_t n);
 
 /// One worker thread that runs a job when asked and says when it is done: the simulator hands
-/// it a cycle's evaluation and ticks of its components (Simulator::step), and their making and
-/// unmaking, since Verilator wants a model evaluated by the thread that built it.
+/// it lane 1's part of each cycle (Simulator::lane_cycle), and the making and unmaking of lane
+/// 1's components, since Verilator wants a model evaluated by the thread that built it.
 ///
 /// A cycle of the thesis pipeline is microseconds of work, so the two threads meet by spinning
 /// on two counters rather than through the kernel. A thread that has spun for long (the other
@@ -36,7 +36,7 @@ class LaneThread {
   /// one: another is started only when the worker is idle, after wait()); it must live until
   /// wait() returns.
   void start(const std::function<void()>& job);
-  /// Waits for the job start() gave, and rethrows what it threw.
+  /// Waits until the worker has run every job started, and rethrows what one threw.
   void wait();
   /// start(job), then wait().
   void call(const std::function<void()>& job) {
