@@ -39,7 +39,11 @@ class ChannelBase {
   int max_occupancy() const { return max_occupancy_; }
   virtual std::uint64_t pushes() const = 0;
   virtual std::uint64_t pops() const = 0;
-  /// Per frame, both ends' stamps (between cycles).
+  /// Per frame, the push end's stamps (first_push, last_push) and the pop end's (first_pop,
+  /// last_pop), each end's own table (between cycles).
+  const std::vector<FrameStamp>& push_frames() const { return push_frames_; }
+  const std::vector<FrameStamp>& pop_frames() const { return pop_frames_; }
+  /// Per frame, both ends' stamps (between cycles): the two tables merged, built at each call.
   const std::vector<FrameStamp>& frames() const {
     frames_.assign(std::max(push_frames_.size(), pop_frames_.size()), FrameStamp{});
     for (std::size_t i = 0; i < push_frames_.size(); ++i) {

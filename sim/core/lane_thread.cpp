@@ -24,16 +24,22 @@ inline void relax() {
   std::this_thread::yield();
 #endif
 }
-}  // namespace
 
-void await_count(const std::atomic<std::int64_t>& a, std::int64_t n) {
-  for (int spins = 0; a.load(std::memory_order_acquire) < n;) {
+/// Spins until `ready()`, yielding the core between looks once it has spun kSpins times.
+template <typename Ready>
+void spin_until(Ready ready) {
+  for (int spins = 0; !ready();) {
     if (++spins < kSpins) {
       relax();
     } else {
       std::this_thread::yield();
     }
   }
+}
+}  // namespace
+
+void await_count(const std::atomic<std::int64_t>& a, std::int64_t n) {
+  spin_until([&] { return a.load(std::memory_order_acquire) >= n; });
 }
 
 LaneThread::LaneThread() : thread_([this] { loop(); }) {}
@@ -59,13 +65,7 @@ void LaneThread::start(const std::function<void()>& job) {
 
 void LaneThread::wait() {
   const std::uint64_t want = posted_.load(std::memory_order_relaxed);
-  for (int spins = 0; done_.load(std::memory_order_acquire) != want;) {
-    if (++spins < kSpins) {
-      relax();
-    } else {
-      std::this_thread::yield();
-    }
-  }
+  spin_until([&] { return done_.load(std::memory_order_acquire) == want; });
   if (error_) {
     std::exception_ptr e = error_;
     error_ = nullptr;

@@ -271,16 +271,25 @@ SimReport Simulator::report() const {
       if (v >= 0 && (dst < 0 || v < dst)) dst = v;
     };
     auto latest = [](std::int64_t& dst, std::int64_t v) { dst = std::max(dst, v); };
+    // A frame seen at either end of a link has a row, as when the two ends shared one table.
+    auto rows_for = [&frame](const ChannelBase* ch) {
+      const std::size_t n = std::max(ch->push_frames().size(), ch->pop_frames().size());
+      if (n > 0) frame(n - 1);
+    };
     for (const auto* in : c->inputs()) {
-      for (std::size_t i = 0; i < in->frames().size(); ++i) {
-        earliest(frame(i).first_in, in->frames()[i].first_pop);
-        latest(frame(i).last_in, in->frames()[i].last_pop);
+      rows_for(in);
+      const auto& popped = in->pop_frames();
+      for (std::size_t i = 0; i < popped.size(); ++i) {
+        earliest(frame(i).first_in, popped[i].first_pop);
+        latest(frame(i).last_in, popped[i].last_pop);
       }
     }
     for (const auto* out : c->outputs()) {
-      for (std::size_t i = 0; i < out->frames().size(); ++i) {
-        earliest(frame(i).first_out, out->frames()[i].first_push);
-        latest(frame(i).last_out, out->frames()[i].last_push);
+      rows_for(out);
+      const auto& pushed = out->push_frames();
+      for (std::size_t i = 0; i < pushed.size(); ++i) {
+        earliest(frame(i).first_out, pushed[i].first_push);
+        latest(frame(i).last_out, pushed[i].last_push);
       }
     }
     r.stages.push_back(std::move(st));
