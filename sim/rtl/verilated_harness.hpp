@@ -98,6 +98,17 @@ inline bool skipping_off() {
   return v != nullptr && std::string(v) == "0";
 }
 
+/// A context for one model Verilated single-threaded (scw Verilates every block without
+/// --threads). Verilator 5.006's context otherwise starts a pool of (processors - 1) worker
+/// threads when its first model is added, which such a model never uses: with a context per
+/// block, a chain of 11 blocks on a 64-core node would start about 700 idle threads. The count
+/// is fixed before the model is made (Verilator refuses a change after).
+inline std::unique_ptr<VerilatedContext> single_model_context() {
+  auto ctx = std::make_unique<VerilatedContext>();
+  ctx->threads(1);
+  return ctx;
+}
+
 /// Owns a VerilatedContext and one model `VM` with ports `clk_i` and `rst_ni`.
 /// Set the environment variable SCW_FST_DIR to a folder and every harness writes
 /// `<folder>/<name>.fst` (open it with GTKWave), only the cycles of SCW_FST_WINDOW when that is
@@ -105,7 +116,7 @@ inline bool skipping_off() {
 template <typename VM>
 class Harness {
  public:
-  explicit Harness(const std::string& name) : ctx_(std::make_unique<VerilatedContext>()) {
+  explicit Harness(const std::string& name) : ctx_(single_model_context()) {
     const char* dir = std::getenv("SCW_FST_DIR");
     const bool tracing = kTraced && dir != nullptr && *dir != '\0';
     if (tracing) {

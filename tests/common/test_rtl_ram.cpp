@@ -7,12 +7,11 @@
 #include <random>
 #include <vector>
 
-#include <verilated.h>
-
 #include "Vram_split.h"
 #include "Vram_split_scw_ram_sdp.h"
 #include "Vram_whole.h"
 #include "Vram_whole_scw_ram_sdp.h"
+#include "sim/rtl/verilated_harness.hpp"
 
 namespace {
 
@@ -29,8 +28,8 @@ void check_ram(std::uint32_t seed) {
   constexpr int kDepth = static_cast<int>(P::Depth);
   constexpr int kWidth = static_cast<int>(P::Width);
   const std::uint64_t mask = (kWidth >= 64) ? ~0ull : ((1ull << kWidth) - 1);
-  VerilatedContext ctx;
-  auto ram = std::make_unique<VM>(&ctx, "ram");
+  const auto ctx = scw::sim::single_model_context();
+  auto ram = std::make_unique<VM>(ctx.get(), "ram");
   std::vector<std::uint64_t> model(kDepth, 0);
   std::uint64_t expect = 0;
   bool known = false;

@@ -34,6 +34,7 @@
 #include "sim/core/join.hpp"
 #include "sim/core/stream_check.hpp"
 #include "sim/models/warning_model.hpp"
+#include "sim/rtl/verilated_harness.hpp"
 #include "sim/rtl/warning_rtl.hpp"
 #include "tests/common/twin_check.hpp"
 
@@ -954,8 +955,8 @@ TEST_CASE("scw_warning_sqrt equals isqrt_round at every rounding boundary", "[wa
 
   using Sqrt = Vwarning_sqrt_scw_warning_sqrt;
   const std::size_t latency = Sqrt::Latency;
-  VerilatedContext ctx;
-  auto m = std::make_unique<Vwarning_sqrt>(&ctx, "sqrt");
+  const auto ctx = scw::sim::single_model_context();
+  auto m = std::make_unique<Vwarning_sqrt>(ctx.get(), "sqrt");
   std::size_t fed = 0, bad = 0, checked = 0;
   // Idle clocks (en low) now and then: the pipeline must hold.
   while (fed < ns.size() + latency) {
@@ -974,7 +975,7 @@ TEST_CASE("scw_warning_sqrt equals isqrt_round at every rounding boundary", "[wa
         FAIL_CHECK("n = " << n << ": RTL " << m->root_o << ", isqrt_round " << hw::isqrt_round(n));
     }
   }
-  Verilated::threadContextp(&ctx);  // see sim/rtl/verilated_harness.hpp
+  Verilated::threadContextp(ctx.get());  // see sim/rtl/verilated_harness.hpp
   m->final();
   m.reset();
   CHECK(checked >= ns.size());
@@ -1082,8 +1083,8 @@ TEST_CASE("scw_warning_rule equals rule_disparity bit for bit", "[warning][rtl]"
   rules.insert(rules.end(), std::begin(extra), std::end(extra));
 
   const std::size_t latency = Rule::Latency;
-  VerilatedContext ctx;
-  auto m = std::make_unique<Vwarning_rule>(&ctx, "rule");
+  const auto ctx = scw::sim::single_model_context();
+  auto m = std::make_unique<Vwarning_rule>(ctx.get(), "rule");
   auto clock = [&m] {
     m->clk_i = 0;
     m->eval();
@@ -1138,7 +1139,7 @@ TEST_CASE("scw_warning_rule equals rule_disparity bit for bit", "[warning][rtl]"
       }
     }
   }
-  Verilated::threadContextp(&ctx);  // see sim/rtl/verilated_harness.hpp
+  Verilated::threadContextp(ctx.get());  // see sim/rtl/verilated_harness.hpp
   m->final();
   m.reset();
   CHECK(checked >= rules.size() * 4000);  // held outputs are checked again
