@@ -110,7 +110,8 @@ void add_sim_command(CLI::App& app) {
                   "size: build with -DSCW_THESIS_RTL=ON)")
       ->capture_default_str();
   cmd->add_option("--rtl-stages", s.rtl_stages,
-                  "with --engine cpp: these blocks Verilated, e.g. labelling,warning");
+                  "with --engine cpp: these blocks Verilated, e.g. labelling,warning")
+      ->delimiter(',');
   cmd->add_option("--left", s.left, "left image (default: a synthetic street scene)");
   cmd->add_option("--right", s.right, "right image");
   cmd->add_option("--mode", s.mode, "disparity mode: thesis or opencv")->capture_default_str();

@@ -90,7 +90,8 @@ void add_synth_command(CLI::App& app) {
   cmd->add_option("--json", b->json_out, "Write the results here (JSON)")->required();
   cmd->add_option("--modules", b->modules,
                   "Comma list of modules to synthesise (default all: scw_rectify_map_grid, "
-                  "scw_rectify, scw_disparity, scw_labelling, scw_warning, scw_pipeline)");
+                  "scw_rectify, scw_disparity, scw_labelling, scw_warning, scw_pipeline)")
+      ->delimiter(',');
   cmd->add_option("--log-dir", b->log_dir,
                   "Keep each module's Yosys log here (default: the JSON file's folder/synth_logs)");
   cmd->add_option("--scripts", b->scripts,

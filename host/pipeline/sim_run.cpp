@@ -36,9 +36,7 @@ sim::PipelineEngines engines_of(const SimOptions& o, const sim::PipelineEngines&
     throw std::invalid_argument("--engine " + o.engine +
                                 ": use cpp, rtl or rtl-top (and --rtl-stages with cpp)");
   auto e = sim::PipelineEngines::all(sim::Engine::cpp);
-  std::stringstream ss(o.rtl_stages);
-  std::string b;
-  while (std::getline(ss, b, ',')) {
+  for (const std::string& b : o.rtl_stages) {
     sim::Engine* slot = b == "check"       ? &e.check
                         : b == "map_grid"  ? &e.map_grid
                         : b == "rectify"   ? &e.rectify
@@ -58,7 +56,9 @@ sim::PipelineEngines engines_of(const SimOptions& o, const sim::PipelineEngines&
 }
 
 std::string engine_name(const SimOptions& o) {
-  return o.rtl_stages.empty() ? o.engine : "mixed (rtl: " + o.rtl_stages + ")";
+  std::string rtl;
+  for (const std::string& b : o.rtl_stages) rtl += (rtl.empty() ? "" : ",") + b;
+  return rtl.empty() ? o.engine : "mixed (rtl: " + rtl + ")";
 }
 
 /// The pair to stream: the user's (converted to grey and resized to the frame) or a synthetic

@@ -26,7 +26,7 @@ struct SimOptions {
   int ppc = 1;
   int frames = 3;
   std::string engine = "cpp";  // cpp or rtl
-  std::string rtl_stages;      // comma list: these blocks Verilated, the rest C++
+  std::vector<std::string> rtl_stages;  // these blocks Verilated, the rest C++
   std::string left, right;     // empty: a synthetic street
   std::string mode = disparity::mode_name(disparity::kDefaultMode);
   int edge_candidates = 0;      // DisparityConfig::edge_candidates (0: cv::StereoBM's band)

@@ -10,7 +10,6 @@
 #include <fstream>
 #include <iostream>
 #include <regex>
-#include <sstream>
 #include <stdexcept>
 
 #include "hls/pipeline/pipeline_params.hpp"
@@ -74,23 +73,11 @@ std::string yosys_version() {
   return "yosys (version unknown: '" + exe + " -V' failed)";
 }
 
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    item.erase(0, item.find_first_not_of(" \t"));
-    item.erase(item.find_last_not_of(" \t") + 1);
-    if (!item.empty()) out.push_back(item);
-  }
-  return out;
-}
-
 /// The asked modules in the pipeline's order: the top comes last, after the stages whose logic
 /// levels it may borrow.
-std::vector<ModuleRun> select(const std::vector<ModuleRun>& all, const std::string& modules) {
-  if (modules.empty()) return all;
-  const auto wanted = split_list(modules);
+std::vector<ModuleRun> select(const std::vector<ModuleRun>& all,
+                              const std::vector<std::string>& wanted) {
+  if (wanted.empty()) return all;
   for (const auto& w : wanted) {
     if (std::none_of(all.begin(), all.end(), [&](const ModuleRun& m) { return m.module == w; })) {
       std::string names;

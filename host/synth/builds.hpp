@@ -31,7 +31,7 @@ const Config& find_config(const std::string& name, int ppc);
 struct BuildRun {
   std::string config;
   int ppc = 1;
-  std::string modules;  // comma list, empty = all, in the pipeline's order whatever was asked
+  std::vector<std::string> modules;  // empty = all; run in the pipeline's order whatever was asked
   std::filesystem::path json_out;
   std::filesystem::path log_dir;  // empty: <json folder>/synth_logs
   std::string scripts;            // rtl_synth.sh's folder, empty: the source tree

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // [pipeline][app] `scw run --engine rtl`: the application chain with the stages as Verilated RTL
-// gives the frame the C++ models give; a frame no build takes is refused with the builds named.
+// gives the frame the C++ models give; a frame no build takes is refused with the builds named;
+// `scw sim --rtl-stages` (some blocks Verilated) reports what the C++ chain does.
 #include <catch2/catch.hpp>
+#include <cstdint>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,6 +14,7 @@
 #include "host/disparity/run_model.hpp"
 #include "host/io/tsukuba.hpp"
 #include "host/pipeline/rtl_engine.hpp"
+#include "host/pipeline/sim_run.hpp"
 
 namespace {
 
@@ -153,4 +157,30 @@ TEST_CASE("run --engine rtl refuses a frame no build takes and names the builds"
                     Catch::Contains("window 11") && Catch::Contains("thesis"));
   CHECK_THROWS_WITH(scw::host::pipeline::make_rtl_engine(crop_options(), 128, 96, {}, 3),
                     Catch::Contains("--threads 3: use 1 or 2"));
+}
+
+TEST_CASE("sim with some blocks Verilated (--rtl-stages) reports what the C++ chain does",
+          "[pipeline][sim][rtl]") {
+  // The blocks are clock-for-clock twins, so a chain that mixes them must give every cycle,
+  // busy span, FIFO figure and result of the all-C++ chain: only the engine's name differs.
+  scw::host::pipeline::SimOptions o;
+  o.config = "small";
+  o.frames = 2;
+  o.stalls = "random:3";
+  std::ostringstream log;
+  const auto cpp = scw::host::pipeline::run_sim(o, log);
+  o.rtl_stages = {"rectify", "labelling", "warning"};
+  const auto mixed = scw::host::pipeline::run_sim(o, log);
+  CHECK(mixed.engine == "mixed (rtl: rectify,labelling,warning)");
+  auto a = scw::host::pipeline::sim_json(cpp);
+  auto b = scw::host::pipeline::sim_json(mixed);
+  REQUIRE(a.at("cycles").get<std::int64_t>() > 0);
+  a.erase("engine");
+  b.erase("engine");
+  CHECK(a.dump() == b.dump());
+
+  o.rtl_stages = {"rectify", "labeling"};
+  CHECK_THROWS_WITH(scw::host::pipeline::run_sim(o, log),
+                    Catch::Contains("--rtl-stages: no block 'labeling'") &&
+                        Catch::Contains("labelling, warning"));
 }
