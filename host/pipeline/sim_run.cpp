@@ -281,10 +281,9 @@ SimRun run_sim(const SimOptions& o, std::ostream& log) {
     throw std::invalid_argument(
         "--threads 2 splits the chain of blocks over two threads; the rtl-top engine is one "
         "Verilated model on one thread: use --engine rtl, or --threads 1");
-  if (o.engine == "rtl-top" && !o.rtl_stages.empty())
-    throw std::invalid_argument(
-        "--rtl-stages picks blocks of --engine cpp; the rtl-top engine "
-        "is every block in one Verilated top");
+  if (o.engine != "cpp" && !o.rtl_stages.empty())
+    throw std::invalid_argument("--rtl-stages picks blocks of --engine cpp; --engine " + o.engine +
+                                " already Verilates every block: give one of the two");
   if (o.config == "small")
     return o.ppc == 1 ? run_small<1>(o, log) : o.ppc == 2 ? run_small<2>(o, log)
                                                           : run_small<4>(o, log);

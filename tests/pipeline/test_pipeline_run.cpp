@@ -179,6 +179,10 @@ TEST_CASE("sim with some blocks Verilated (--rtl-stages) reports what the C++ ch
   b.erase("engine");
   CHECK(a.dump() == b.dump());
 
+  o.engine = "rtl";
+  CHECK_THROWS_WITH(scw::host::pipeline::run_sim(o, log),
+                    Catch::Contains("--engine rtl already Verilates every block"));
+  o.engine = "cpp";
   o.rtl_stages = {"rectify", "labeling"};
   CHECK_THROWS_WITH(scw::host::pipeline::run_sim(o, log),
                     Catch::Contains("--rtl-stages: no block 'labeling'") &&
