@@ -91,24 +91,11 @@ cv::Scalar severity_bgr(Severity s) {
   return {255, 255, 255};
 }
 
-const char* severity_word(Severity s) {
-  switch (s) {
-    case Severity::kLow:
-      return "low";
-    case Severity::kMedium:
-      return "medium";
-    case Severity::kHigh:
-      return "high";
-    case Severity::kNone:
-      break;
-  }
-  return "none";
-}
-
 std::string overlay_caption(const OverlayObject* o) {
   if (o == nullptr || o->severity == Severity::kNone) return "no obstacle";
   // Too close: the stage only knows the object is nearer than the end of its search range.
-  return (o->too_close ? "< " : "") + metres(o->distance_m) + " " + severity_word(o->severity);
+  return (o->too_close ? "< " : "") + metres(o->distance_m) + " " +
+         hls::warning::severity_name(o->severity);
 }
 
 cv::Point2d project(const Eigen::Vector3d& p, const WarningSetup& s) {

@@ -42,9 +42,6 @@ struct OverlayStyle {
 /// BGR colour of a severity: green low, yellow medium, red high (white for none).
 cv::Scalar severity_bgr(hls::warning::Severity s);
 
-/// "low", "medium", "high" or "none".
-const char* severity_word(hls::warning::Severity s);
-
 /// The upper-left caption: "6.24 m medium", "< 2.37 m high" when too close, "no obstacle" when
 /// `deciding` is null or not an obstacle.
 std::string overlay_caption(const OverlayObject* deciding);

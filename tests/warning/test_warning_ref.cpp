@@ -72,20 +72,6 @@ Object make_object(int u, int v, int dq, int x_min, int y_min, int x_max, int y_
   return o;
 }
 
-const char* name(Severity s) {
-  switch (s) {
-    case Severity::kNone:
-      return "none";
-    case Severity::kLow:
-      return "low";
-    case Severity::kMedium:
-      return "medium";
-    case Severity::kHigh:
-      return "high";
-  }
-  return "?";
-}
-
 /// The largest |fixed - float| of one quantity and where it happened.
 struct WorstError {
   double err = 0.0;
@@ -197,10 +183,11 @@ SweepResult sweep(const WarningSetup& s) {
         if (differ || e.in_tunnel != f.in_tunnel || e.obstacle != f.obstacle) {
           if (r.mismatches++ == 0) {
             std::ostringstream m;
-            m << "u " << u << " v " << v << " dq " << dq << ": fixed " << name(e.severity) << " (D "
-              << e.distance_mm << " mm, gap " << e.gap_mm << " mm, H " << e.height_mm
-              << " mm), float " << name(f.severity) << " (D " << f.distance_m << " m, gap "
-              << f.gap_m << " m, H " << f.height_m << " m)";
+            m << "u " << u << " v " << v << " dq " << dq << ": fixed "
+              << scw::hls::warning::severity_name(e.severity) << " (D " << e.distance_mm
+              << " mm, gap " << e.gap_mm << " mm, H " << e.height_mm << " mm), float "
+              << scw::hls::warning::severity_name(f.severity) << " (D " << f.distance_m
+              << " m, gap " << f.gap_m << " m, H " << f.height_m << " m)";
             r.first_mismatch = m.str();
           }
         }
