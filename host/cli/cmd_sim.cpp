@@ -111,7 +111,8 @@ void add_sim_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--rtl-stages", s.rtl_stages,
                   "with --engine cpp: these blocks Verilated, e.g. labelling,warning")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->transform(trimmed());
   cmd->add_option("--left", s.left, "left image (default: a synthetic street scene)");
   cmd->add_option("--right", s.right, "right image");
   cmd->add_option("--mode", s.mode, "disparity mode: thesis or opencv")->capture_default_str();

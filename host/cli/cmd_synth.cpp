@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/value_checks.hpp"
 #include "host/synth/builds.hpp"
 #include "host/synth/timing.hpp"
 
@@ -91,7 +92,8 @@ void add_synth_command(CLI::App& app) {
   cmd->add_option("--modules", b->modules,
                   "Comma list of modules to synthesise (default all: scw_rectify_map_grid, "
                   "scw_rectify, scw_disparity, scw_labelling, scw_warning, scw_pipeline)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->transform(trimmed());
   cmd->add_option("--log-dir", b->log_dir,
                   "Keep each module's Yosys log here (default: the JSON file's folder/synth_logs)");
   cmd->add_option("--scripts", b->scripts,

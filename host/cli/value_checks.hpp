@@ -2,7 +2,7 @@
 // CLI11 checks for numeric options whose errors say what is wrong with the value given and what a
 // good one looks like ("--camera-height: -1 is not positive; give a positive number of m, e.g.
 // 1.2"), before the value reaches a stage whose own check can only name its internal parameter.
-// CLI11 puts the option's name in front of each message.
+// CLI11 puts the option's name in front of each message. Also the trimming of a comma list's items.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -59,6 +59,18 @@ inline CLI::Validator odd_window() {
       [](double v) { return v >= 3 && v == std::floor(v) && static_cast<long>(v) % 2 == 1; },
       "is not a window size (N x N around the pixel)", "an odd number of px, at least 3",
       "9 or 21");
+}
+
+/// For a comma list split by CLI11 (`delimiter(',')`): the blanks around each item go, so
+/// "labelling, warning" names two items as "labelling,warning" does.
+inline CLI::Validator trimmed() {
+  return CLI::Validator(
+      [](std::string& s) {
+        s.erase(0, s.find_first_not_of(" \t"));
+        s.erase(s.find_last_not_of(" \t") + 1);
+        return std::string{};
+      },
+      "");
 }
 
 }  // namespace scw::cli
