@@ -43,18 +43,19 @@ class ChannelBase {
   /// last_pop), each end's own table (between cycles).
   const std::vector<FrameStamp>& push_frames() const { return push_frames_; }
   const std::vector<FrameStamp>& pop_frames() const { return pop_frames_; }
-  /// Per frame, both ends' stamps (between cycles): the two tables merged, built at each call.
-  const std::vector<FrameStamp>& frames() const {
-    frames_.assign(std::max(push_frames_.size(), pop_frames_.size()), FrameStamp{});
+  /// Per frame, both ends' stamps (between cycles): the two tables merged, made at each call
+  /// (for reports; a loop over frames takes it once).
+  std::vector<FrameStamp> frames() const {
+    std::vector<FrameStamp> all(std::max(push_frames_.size(), pop_frames_.size()));
     for (std::size_t i = 0; i < push_frames_.size(); ++i) {
-      frames_[i].first_push = push_frames_[i].first_push;
-      frames_[i].last_push = push_frames_[i].last_push;
+      all[i].first_push = push_frames_[i].first_push;
+      all[i].last_push = push_frames_[i].last_push;
     }
     for (std::size_t i = 0; i < pop_frames_.size(); ++i) {
-      frames_[i].first_pop = pop_frames_[i].first_pop;
-      frames_[i].last_pop = pop_frames_[i].last_pop;
+      all[i].first_pop = pop_frames_[i].first_pop;
+      all[i].last_pop = pop_frames_[i].last_pop;
     }
-    return frames_;
+    return all;
   }
   /// True if a beat entered or left during the last committed cycle.
   bool moved() const { return moved_; }
@@ -91,7 +92,6 @@ class ChannelBase {
   bool moved_ = false;
   std::vector<FrameStamp> push_frames_;
   std::vector<FrameStamp> pop_frames_;
-  mutable std::vector<FrameStamp> frames_;
 };
 
 /// A FIFO with registered flags, as rtl_models/common/scw_fifo.sv: `can_push()`/`can_pop()`
@@ -102,8 +102,10 @@ class ChannelBase {
 /// The beats are a ring of depth + 1 slots, counted by the number of beats each end has moved:
 /// the producer writes a slot the consumer cannot be reading (at most depth - 1 are held when it
 /// may push), so the two ends need no lock when they are on two threads.
+/// `final`: commit() calls commit_pop() and commit_push() on every cycle a beat moves, and they
+/// then need no virtual call.
 template <typename T>
-class Fifo : public ChannelBase {
+class Fifo final : public ChannelBase {
  public:
   using value_type = T;
   Fifo(std::string name, int depth)

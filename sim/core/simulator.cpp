@@ -94,6 +94,10 @@ void Simulator::assign_fifos() {
   assigned_fifos_ = channels_.size();
 }
 
+void Simulator::reassign_if_added() {
+  if (assigned_ != components_.size() || assigned_fifos_ != channels_.size()) assign_fifos();
+}
+
 void Simulator::settle_lane() {
   if (lane_) lane_->wait();
 }
@@ -104,7 +108,7 @@ void Simulator::step() {
 }
 
 void Simulator::step_once() {
-  if (assigned_ != components_.size() || assigned_fifos_ != channels_.size()) assign_fifos();
+  reassign_if_added();
   const std::int64_t c = cycle_;
   if (!lane_) {
     const bool moved = step_lane(0, c);
@@ -178,7 +182,7 @@ void Simulator::run_until(const std::function<bool()>& done, std::int64_t max_cy
 
 void Simulator::run_two(const std::function<bool()>& done, std::int64_t limit,
                         std::int64_t max_cycles) {
-  if (assigned_ != components_.size() || assigned_fifos_ != channels_.size()) assign_fifos();
+  reassign_if_added();
   settle_lane();
   lane_next_ = cycle_;
   if (done()) return;

@@ -182,6 +182,8 @@ class Simulator {
   void settle_lane();
   /// Which FIFOs each lane commits, and which are split between the two.
   void assign_fifos();
+  /// assign_fifos() again if a component or FIFO was added since it last ran.
+  void reassign_if_added();
 
   std::vector<std::unique_ptr<ChannelBase>> channels_;
   std::vector<std::unique_ptr<Component>> components_;  // in the order added (reports)

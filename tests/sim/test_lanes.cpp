@@ -93,8 +93,6 @@ Run run_chain(int threads, Delay::Threads* seen = nullptr, int fail_at = -1) {
   return {sink.beats(), s.report()};
 }
 
-}  // namespace
-
 /// source -> a (lane 0) -> b (lane 1) -> a FIFO nobody drains: it fills, everything behind it
 /// stops, and the run ends in a deadlock report; or, with a small `max_cycles`, at the limit.
 std::string run_stuck(int threads, std::int64_t max_cycles) {
@@ -114,6 +112,8 @@ std::string run_stuck(int threads, std::int64_t max_cycles) {
   }
   return "no error";
 }
+
+}  // namespace
 
 TEST_CASE("two threads: the same deadlock report and cycle limit as one", "[sim][lanes]") {
   const std::string one = run_stuck(1, 100000);
