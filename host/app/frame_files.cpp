@@ -54,6 +54,18 @@ Pictures pictures_from_name(const std::string& name) {
   throw std::invalid_argument("pictures '" + name + "': give none, overlay or all");
 }
 
+// Kept beside write_frame(), which writes these in this order (tests/app/run.cmake checks a
+// run's folder against the list `scw run` prints).
+std::string frame_file_names(Pictures pictures) {
+  std::string names = "objects.csv";
+  if (pictures == Pictures::kNone) return names;
+  names += ", overlay.png";
+  if (pictures == Pictures::kOverlay) return names;
+  return names +
+         ", left_rect.png, right_rect.png, disparity16.png, disparity.png, labels.png, "
+         "labels_color.png, road.png";
+}
+
 void write_frame(const fs::path& dir, const std::string& prefix, const FrameOutput& f,
                  Pictures pictures) {
   write_objects_csv(dir / (prefix + "objects.csv"), f);

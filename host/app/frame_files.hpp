@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The files `scw run` writes for a frame: the rectified pair, the disparity (8 and 16 bits), the
-// labels, the overlay, the road picture and objects.csv (docs/run.md).
+// labels, the overlay, the road picture and objects.csv (docs/warning.md, "`scw run`").
 #pragma once
 
 #include <filesystem>
@@ -21,6 +21,9 @@ enum class Pictures { kNone, kOverlay, kAll };
 /// "none", "overlay", "all"; pictures_from_name throws std::invalid_argument for another name.
 const char* pictures_name(Pictures p);
 Pictures pictures_from_name(const std::string& name);
+
+/// The files write_frame() writes for a frame under `pictures`, comma-separated, for messages.
+std::string frame_file_names(Pictures pictures);
 
 /// The chosen pictures of a frame and its objects.csv into `dir`, names prefixed with `prefix`.
 void write_frame(const std::filesystem::path& dir, const std::string& prefix, const FrameOutput& f,

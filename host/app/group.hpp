@@ -2,7 +2,7 @@
 // Groups the labelling stage's objects into physical targets: block matching splits a cyclist
 // into body and wheel parts at disparity steps the join rule (eq. 3.10) does not bridge, so
 // parts that touch in the image at nearly the same depth are one target for classification,
-// tracking and the overlay (docs/run.md).
+// tracking and the overlay (docs/warning.md, "`scw run`").
 #pragma once
 
 #include <vector>

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // `scw run`: the whole chain on a stereo pair or a folder of numbered pairs; writes the
-// rectified pair, disparity, labels, the warning overlay and results.jsonl (docs/run.md).
+// rectified pair, disparity, labels, the warning overlay and results.jsonl (docs/warning.md,
+// "`scw run`").
 #include <iostream>
 #include <memory>
 #include <string>
 #include <tuple>
 
 #include "host/app/camera.hpp"
+#include "host/app/frame_files.hpp"
 #include "host/app/run.hpp"
 #include "host/app/sequence.hpp"
 #include "host/cli/commands.hpp"
@@ -60,6 +62,7 @@ void run_chain(RunOptions& o, const CLI::App& cmd) {
   };
   const app::SequenceSplit split{shard_of(o.shard), o.segments};
   const std::size_t frames = app::plan_split(split, pairs.size()).range.size();
+  const auto pictures = app::pictures_from_name(o.pictures);
   Progress progress(frames);
   remove_old_manifest(o.out_dir);
   app::run_pairs(
@@ -70,15 +73,11 @@ void run_chain(RunOptions& o, const CLI::App& cmd) {
         else
           std::cout << j.dump() << "\n";
       },
-      app::pictures_from_name(o.pictures), split);
+      pictures, split);
   write_manifest_if_sharded(o.shard, cmd, {"out-dir"},
                             {"", {}, {}, pairs.size(), "frames", "", {"results.jsonl"}}, o.out_dir);
   std::cout << "wrote " << frames << (frames == 1 ? " frame" : " frames") << " in " << o.out_dir
-            << " ("
-            << (o.pictures == "all"       ? "overlay.png, disparity.png, labels_color.png, "
-                : o.pictures == "overlay" ? "overlay.png, "
-                                          : "")
-            << "objects.csv, results.jsonl)\n";
+            << " (results.jsonl; a frame's " << app::frame_file_names(pictures) << ")\n";
 }
 
 }  // namespace

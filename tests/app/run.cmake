@@ -11,10 +11,17 @@ set(scw_tsu "${PROJECT_SOURCE_DIR}/data/tsukuba")
 # Tsukuba's camera is not published with the pair: f 615 px and b 0.1 m are assumed for the demo.
 set(scw_tsu_run "--rectified --focal 615 --baseline 0.1 --window 9 --min-disp 0 --max-disp 15 \
                  --min-area 50")
+# `scw run`'s last line names the files a frame wrote: exactly those in folder @DIR@ (its output
+# in @DIR@.out).
+set(scw_run_names_files "diff <(ls @DIR@ | grep -vx results.jsonl) <(sed -n 's/.*a frame.s //p' @DIR@.out \
+                         | tr -d ')' | tr ',' '\\n' | tr -d ' ' | sort)")
+string(REPLACE "@DIR@" "cli_run" scw_run_all_named "${scw_run_names_files}")
+string(REPLACE "@DIR@" "cli_run_$p" scw_run_p_named "${scw_run_names_files}")
 add_test(NAME "app:cli run writes every picture and a results line with the required keys"
          COMMAND bash -c "rm -rf cli_run && '$<TARGET_FILE:scw>' run ${scw_tsu_run} \
                           --left '${scw_tsu}/scene1.row3.col3.ppm' \
-                          --right '${scw_tsu}/scene1.row3.col4.ppm' --out-dir cli_run && \
+                          --right '${scw_tsu}/scene1.row3.col4.ppm' --out-dir cli_run \
+                          > cli_run.out && ${scw_run_all_named} && \
                           for f in left_rect.png right_rect.png disparity.png disparity16.png \
                           labels.png labels_color.png overlay.png objects.csv results.jsonl; do \
                           test -s cli_run/$f || { echo missing $f; exit 1; }; done && \
@@ -25,13 +32,13 @@ add_test(NAME "app:cli run writes every picture and a results line with the requ
                           { echo missing key $k; exit 1; }; done"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 # --pictures none and overlay: the same results line, objects.csv always, only the pictures
-# chosen.
+# chosen, each run naming what it wrote.
 add_test(NAME "app:cli run --pictures none and overlay write the same results and only the chosen pictures"
          COMMAND bash -c "for p in none overlay; do rm -rf cli_run_$p && '$<TARGET_FILE:scw>' run \
                           ${scw_tsu_run} --left '${scw_tsu}/scene1.row3.col3.ppm' \
                           --right '${scw_tsu}/scene1.row3.col4.ppm' --pictures $p \
-                          --out-dir cli_run_$p >/dev/null || exit 1; \
-                          test -s cli_run_$p/objects.csv || exit 1; done && \
+                          --out-dir cli_run_$p > cli_run_$p.out || exit 1; \
+                          test -s cli_run_$p/objects.csv && ${scw_run_p_named} || exit 1; done && \
                           test $(ls cli_run_none | grep -c png) -eq 0 && \
                           test \"$(ls cli_run_overlay | grep png)\" = overlay.png && \
                           cmp cli_run_none/results.jsonl cli_run_overlay/results.jsonl && \
