@@ -12,6 +12,7 @@
 #include "host/reference/ground_ref.hpp"
 #include "host/road/run_model.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
+#include "sim/core/simulator.hpp"
 #include "sim/pipeline/pipeline_chain.hpp"
 #if SCW_THESIS_RTL
 #include "sim/builds/pipeline_thesis_rtl.hpp"
@@ -152,8 +153,7 @@ bool takes(const app::RunOptions& o, int width, int height) {
 
 app::StageEngine make_rtl_engine(const app::RunOptions& o, int width, int height,
                                  const KnotSource& knots, int threads) {
-  if (threads != 1 && threads != 2)
-    throw std::invalid_argument("--threads " + std::to_string(threads) + ": use 1 or 2");
+  sim::check_threads(threads, "--threads");
   using Small = hls::pipeline::SmallPipeline<1>;
   if (takes<Small>(o, width, height))
     return engine_for<Small, sim::small_build::Rtl<1>::type>(o, width, height, knots, threads);

@@ -275,8 +275,7 @@ SimRun run_sim(const SimOptions& o, std::ostream& log) {
   if (o.frames < 1) throw std::invalid_argument("--frames must be at least 1");
   if (o.ppc != 1 && o.ppc != 2 && o.ppc != 4)
     throw std::invalid_argument("--ppc " + std::to_string(o.ppc) + ": use 1, 2 or 4");
-  if (o.threads != 1 && o.threads != 2)
-    throw std::invalid_argument("--threads " + std::to_string(o.threads) + ": use 1 or 2");
+  sim::check_threads(o.threads, "--threads");
   if (o.threads != 1 && o.engine == "rtl-top")
     throw std::invalid_argument(
         "--threads 2 splits the chain of blocks over two threads; the rtl-top engine is one "

@@ -11,10 +11,15 @@
 
 namespace scw::sim {
 
-Simulator::Simulator(int threads) {
+void check_threads(int threads, const std::string& what) {
   if (threads != 1 && threads != 2)
-    throw std::invalid_argument("the simulator steps its components on 1 or 2 threads, not " +
-                                std::to_string(threads));
+    throw std::invalid_argument(what + " " + std::to_string(threads) +
+                                ": use 1 or 2 (the simulator steps its components on 1 or 2 "
+                                "threads, docs/sim.md)");
+}
+
+Simulator::Simulator(int threads) {
+  check_threads(threads, "threads");
   if (threads == 2) {
     lane_ = std::make_unique<LaneThread>();
     lane_step_ = [this] { lane_cycle(); };

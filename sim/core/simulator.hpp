@@ -95,6 +95,11 @@ struct SimReport {
   std::string text() const;
 };
 
+/// Throws std::invalid_argument unless `threads` is a count a Simulator takes: 1, or 2 (lane 1
+/// on a second thread). `what` names the count in the message ("--threads" for a command, which
+/// asks before it sets up a run).
+void check_threads(int threads, const std::string& what);
+
 class Simulator {
  public:
   /// `threads` 2: the components added to lane 1 (add_to) step on a second thread, beside the

@@ -158,8 +158,8 @@ TEST_CASE("an error on the second thread reaches the caller", "[sim][lanes]") {
 }
 
 TEST_CASE("the simulator takes 1 or 2 threads and a component lane 0 or 1", "[sim][lanes]") {
-  REQUIRE_THROWS_WITH(scw::sim::Simulator(3), Catch::Contains("on 1 or 2 threads, not 3"));
-  REQUIRE_THROWS_WITH(scw::sim::Simulator(0), Catch::Contains("on 1 or 2 threads, not 0"));
+  REQUIRE_THROWS_WITH(scw::sim::Simulator(3), Catch::Contains("threads 3: use 1 or 2"));
+  REQUIRE_THROWS_WITH(scw::sim::Simulator(0), Catch::Contains("threads 0: use 1 or 2"));
   scw::sim::Simulator s(2);
   auto& f = s.fifo<V>("f", 1);
   auto& g = s.fifo<V>("g", 1);
