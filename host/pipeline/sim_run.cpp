@@ -283,6 +283,8 @@ SimRun run_sim(const SimOptions& o, std::ostream& log) {
   if (o.engine != "cpp" && !o.rtl_stages.empty())
     throw std::invalid_argument("--rtl-stages picks blocks of --engine cpp; --engine " + o.engine +
                                 " already Verilates every block: give one of the two");
+  // An unknown engine or block is named before anything is set up or printed.
+  if (o.engine != "rtl-top") engines_of(o, sim::PipelineEngines::all(sim::Engine::rtl));
   if (o.config == "small")
     return o.ppc == 1 ? run_small<1>(o, log) : o.ppc == 2 ? run_small<2>(o, log)
                                                           : run_small<4>(o, log);

@@ -50,8 +50,10 @@ add_test(NAME "pipeline:cli sim refuses an unknown configuration and names the t
          COMMAND bash -c "! '$<TARGET_FILE:scw>' sim --config big 2> cli_sim_bad.err && \
                           grep -q 'use thesis (1280 x 480' cli_sim_bad.err"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# The refusal is the only line: nothing is set up or announced first.
 add_test(NAME "pipeline:cli sim --rtl-stages takes a comma list, blanks allowed, and names an unknown block"
          COMMAND bash -c "! '$<TARGET_FILE:scw>' sim --config small --frames 1 \
                             --rtl-stages 'warning, nope' 2> cli_sim_stages.err && \
-                          grep -q \"no block 'nope'\" cli_sim_stages.err"
+                          grep -q \"no block 'nope'\" cli_sim_stages.err && \
+                          test $(wc -l < cli_sim_stages.err) -eq 1"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
