@@ -35,6 +35,16 @@ set_tests_properties("vectors:a wrong beat in pipeline/small_street fails both s
                      PROPERTIES LABELS "vectors;verilator;icarus" TIMEOUT 300
                                 ENVIRONMENT "${SCW_REPLAY_ENV}")
 
+# A set made at other widths (a field of scw_pkg.sv changed since) is refused in both simulators
+# with both widths named, not failed on its first word (tests/vectors/stale_set.sh).
+set(_name "vectors:a labelling set of other word widths is refused in both simulators, naming the widths")
+add_test(NAME "${_name}"
+         COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/vectors/stale_set.sh"
+                 "${PROJECT_SOURCE_DIR}/vectors/labelling/shapes" expected.hex replay/stale
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties("${_name}" PROPERTIES LABELS "vectors;verilator;icarus" TIMEOUT 300
+                                           ENVIRONMENT "${SCW_REPLAY_ENV}")
+
 # The netlist Yosys makes of a block (scripts/replay.sh --simulator netlist: synth_xilinx, the
 # netlist scripts/rtl_synth.sh times, in Icarus with Yosys's models of the 7-series cells). Only
 # a block without block RAM at its set's size can run so (Yosys 0.23's RAMB18E1 and RAMB36E1

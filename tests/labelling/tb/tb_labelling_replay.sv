@@ -81,6 +81,14 @@ module tb_labelling_replay #(
     .out_last_o(out_last), .err_o(err)
   );
 
+  // A set made at other scw_pkg widths (a width changed since) holds words this RTL cannot
+  // match: say so, rather than fail on the first word that differs.
+  initial begin
+    if ($bits(u_dut.out_data_o) != OutW)
+      $fatal(1, "the set's object words are %0d bits, this scw_labelling's %0d: the set was made at other scw_pkg widths; regenerate it (scripts/regen_vectors.sh) or replay it on the RTL it was made for",
+             OutW, $bits(u_dut.out_data_o));
+  end
+
   // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
   logic stalled = 1'b0;
   logic [OutW:0] stalled_word;

@@ -162,6 +162,13 @@ module tb_pipeline_replay #(
     .take(u_dut.u_road.out_valid_o && u_dut.u_road.out_ready_i),
     .line({u_dut.u_road.out_eol_o, u_dut.u_road.out_sof_o, u_dut.u_road.out_data_o}),
     .seen(n_road));
+  // A set made at other scw_pkg widths (a width changed since) holds words this RTL cannot
+  // match: say so, rather than fail on the first word that differs.
+  initial begin
+    if ($bits(u_dut.u_labelling.out_data_o) + 1 != ObjBits || $bits(u_dut.out_data_o) + 1 != ResBits)
+      $fatal(1, "the set's object and result words are %0d and %0d bits with last, this scw_pipeline's %0d and %0d: the set was made at other scw_pkg widths; regenerate it (scripts/regen_vectors.sh) or replay it on the RTL it was made for",
+             ObjBits, ResBits, $bits(u_dut.u_labelling.out_data_o) + 1, $bits(u_dut.out_data_o) + 1);
+  end
   tb_pipeline_stream_check #(.Name("objects"), .Bits(ObjBits), .Lines(ObjWords), .Pixel(0))
     u_objects (.clk(clk),
     .take(u_dut.u_labelling.out_valid_o && u_dut.u_labelling.out_ready_i),
