@@ -17,10 +17,7 @@ using Top = sim::small_build::Top<P>;
 
 /// The chain's results, the cycles they left (from its cycle 0) and its object words.
 inline RunOutput output_of(const Chain& c) {
-  RunOutput o{c.results(), {}, c.object_table()};
-  for (const auto& f : const_cast<Chain&>(c).result_fifo().frames())
-    if (f.first_pop >= 0) o.result_cycles.push_back(f.first_pop - c.start_cycle());
-  return o;
+  return {c.results(), c.result_cycles(), c.object_table()};
 }
 
 inline RunOutput output_of(sim::TopRun&& r) {

@@ -85,9 +85,8 @@ cv::Mat frame_of(const std::vector<hls::Beat<std::uint8_t, P>>& beats, std::size
 /// frame as the stage's is, broken frames included); the good ones' objects and results compared.
 void check_reference(const Chain& cpp, const SoakStream& st, const SoakOptions& o,
                      SoakSummary& s) {
-  auto& c = const_cast<Chain&>(cpp);
-  const auto& l = c.rect_left().recorded();
-  const auto& r = c.rect_right().recorded();
+  const auto& l = cpp.rect_left().recorded();
+  const auto& r = cpp.rect_right().recorded();
   const std::size_t n = static_cast<std::size_t>(o.width) * static_cast<std::size_t>(o.height);
   const auto opt = soak_stage_options();
   pipeline::ReferenceChain ref(Build::kWindow, opt);

@@ -171,6 +171,13 @@ class PipelineChain {
   }
 
   const std::vector<Result>& results() const { return sink_->beats(); }
+  /// The cycle each result left the chain (taken from the result FIFO), from cycle 0.
+  std::vector<std::int64_t> result_cycles() const {
+    std::vector<std::int64_t> v;
+    for (const auto& f : out_->frames())
+      if (f.first_pop >= 0) v.push_back(f.first_pop - start_);
+    return v;
+  }
   /// Every object word that left on the object-table output, frames back to back.
   const std::vector<hls::labelling::LabelPacket>& object_table() const {
     return table_sink_->beats();
@@ -187,6 +194,8 @@ class PipelineChain {
   // Links worth looking at (pictures of each stage, FIFO stamps for timing).
   Fifo<raw_beat>& rect_left() { return *rect_l_; }
   Fifo<raw_beat>& rect_right() { return *rect_r_; }
+  const Fifo<raw_beat>& rect_left() const { return *rect_l_; }
+  const Fifo<raw_beat>& rect_right() const { return *rect_r_; }
   Fifo<disp_beat>& disparity() { return *disp_; }
   /// What the road stage leaves of the disparity.
   Fifo<label_beat>& road() { return *road_; }
