@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// frame_note(), plan_split(), run_pairs() (host/app/sequence.hpp).
+// frame_note(), run_pairs() (host/app/sequence.hpp).
 #include "host/app/sequence.hpp"
 
 #include <algorithm>
@@ -17,25 +17,6 @@ std::string frame_note(const FrameOutput& f) {
   if (f.deciding_label > 0)
     note += " at " + std::to_string(f.result.distance_mm / 1000.0).substr(0, 5) + " m";
   return note;
-}
-
-SplitPlan plan_split(const SequenceSplit& split, std::size_t frames) {
-  const int segments = split.segments == 0 ? split.shard.count : split.segments;
-  if (segments < 1 || segments % split.shard.count != 0)
-    throw std::invalid_argument("--segments " + std::to_string(segments) + " with --shard " +
-                                std::to_string(split.shard.index) + "/" +
-                                std::to_string(split.shard.count) +
-                                ": give a multiple of N, so that each shard starts where a "
-                                "segment does (e.g. --segments " +
-                                std::to_string(split.shard.count) + ")");
-  SplitPlan plan{shard_range(split.shard, frames), {}};
-  for (int s = 0; s < segments; ++s) {
-    const std::size_t start = shard_range({s, segments}, frames).begin;
-    if (start >= plan.range.begin && start < plan.range.end &&
-        (plan.restarts.empty() || plan.restarts.back() != start))
-      plan.restarts.push_back(start);
-  }
-  return plan;
 }
 
 void run_pairs(const RunnerFactory& make, const std::vector<PairFiles>& pairs, cv::Size size,

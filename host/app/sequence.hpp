@@ -33,24 +33,6 @@ std::string frame_note(const FrameOutput& f);
 /// state restarts.
 using RunnerFactory = std::function<std::unique_ptr<Runner>()>;
 
-/// Which frames of a sequence a process runs and where the run's state restarts. The tracker and
-/// the road stage carry state from frame to frame, so a shard cannot start mid-run as if it had
-/// seen the frames before it: instead every run restarts its state at the first frame of each of
-/// `segments` contiguous blocks (shard_range's rule), and a shard is a whole number of blocks.
-/// One process with `segments` N writes exactly what N shards of it write together.
-struct SequenceSplit {
-  Shard shard;       // the frames run here: shard_range(shard, number of pairs)
-  int segments = 0;  // 0: shard.count; otherwise a multiple of shard.count
-};
-
-/// The frames [begin, end) that run_pairs runs of `frames`, and at which of them it restarts the
-/// state. Throws std::invalid_argument when `segments` is not a multiple of the shard count.
-struct SplitPlan {
-  ItemRange range;
-  std::vector<std::size_t> restarts;  // global frame numbers, ascending, the first is range.begin
-};
-SplitPlan plan_split(const SequenceSplit& split, std::size_t frames);
-
 /// Runs the pairs of `split`'s shard (all of `size`) in order through Runners from `make` (a new
 /// one at each restart), writing each frame's files (write_frame with `pictures`; prefixed by
 /// frame_prefix when the sequence has more than one pair) and its line of results.jsonl, numbered

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// parse_shard(), shard_range() and the shard manifest (host/app/shard.hpp).
+// parse_shard(), shard_range(), plan_split() and the shard manifest (host/app/shard.hpp).
 #include "host/app/shard.hpp"
 
 #include <fstream>
@@ -34,6 +34,33 @@ Shard parse_shard(const std::string& text) {
 ItemRange shard_range(const Shard& s, std::size_t total) {
   const auto at = [&](int i) { return total * static_cast<std::size_t>(i) / s.count; };
   return {at(s.index), at(s.index + 1)};
+}
+
+SplitPlan plan_split(const SequenceSplit& split, std::size_t frames) {
+  const int segments = split.segments == 0 ? split.shard.count : split.segments;
+  if (segments < 1 || segments % split.shard.count != 0)
+    throw std::invalid_argument("--segments " + std::to_string(segments) + " with --shard " +
+                                std::to_string(split.shard.index) + "/" +
+                                std::to_string(split.shard.count) +
+                                ": give a multiple of N, so that each shard starts where a "
+                                "segment does (e.g. --segments " +
+                                std::to_string(split.shard.count) + ")");
+  SplitPlan plan{shard_range(split.shard, frames), {}};
+  for (int s = 0; s < segments; ++s) {
+    const std::size_t start = shard_range({s, segments}, frames).begin;
+    if (start >= plan.range.begin && start < plan.range.end &&
+        (plan.restarts.empty() || plan.restarts.back() != start))
+      plan.restarts.push_back(start);
+  }
+  return plan;
+}
+
+std::vector<ItemRange> segments_of(const SplitPlan& plan) {
+  std::vector<ItemRange> segs;
+  for (std::size_t i = 0; i < plan.restarts.size(); ++i)
+    segs.push_back(
+        {plan.restarts[i], i + 1 < plan.restarts.size() ? plan.restarts[i + 1] : plan.range.end});
+  return segs;
 }
 
 void write_shard_manifest(const fs::path& dir, const ShardManifest& m) {

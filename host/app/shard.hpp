@@ -30,6 +30,27 @@ struct ItemRange {
 /// blocks in order, sizes differing by at most one, every item in exactly one block.
 ItemRange shard_range(const Shard& s, std::size_t total);
 
+/// Which frames of a run a process runs and where the run's state restarts. What carries state
+/// from frame to frame (scw run's tracker and road stage, scw sim's pipeline, a vector set's
+/// stream) cannot start mid-run as if it had seen the frames before it: instead every run
+/// restarts its state at the first frame of each of `segments` contiguous blocks (shard_range's
+/// rule), and a shard is a whole number of blocks. One process with `segments` N writes exactly
+/// what N shards of it write together.
+struct SequenceSplit {
+  Shard shard;       // the frames run here: shard_range(shard, number of pairs)
+  int segments = 0;  // 0: shard.count; otherwise a multiple of shard.count
+};
+
+/// The frames [begin, end) a process runs of `frames`, and at which of them it restarts the
+/// state. Throws std::invalid_argument when `segments` is not a multiple of the shard count.
+struct SplitPlan {
+  ItemRange range;
+  std::vector<std::size_t> restarts;  // global frame numbers, ascending, the first is range.begin
+};
+SplitPlan plan_split(const SequenceSplit& split, std::size_t frames);
+/// The plan's segments in order: [a restart, the next one or the range's end).
+std::vector<ItemRange> segments_of(const SplitPlan& plan);
+
 /// What a shard writes in shard.json: the command, which shard it is, its items, the run's
 /// settings (every option but --shard and the output folder) and the files `scw merge` joins
 /// by concatenation in shard order (every other file is copied; two shards may not write one).

@@ -140,10 +140,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--frame-period", o->run.frame_period_s, "Seconds between frames (speed)")
       ->capture_default_str()->check(positive("s", "0.01"));
   add_shard_option(cmd, o->shard, "sequence's frames");
-  cmd->add_option("--segments", o->segments,
-                  "Restart the tracker and the road stage at the first frame of each of this many "
-                  "blocks (default: N of --shard, else 1; docs/slurm.md)")
-      ->check(CLI::PositiveNumber);
+  add_segments_option(cmd, o->segments, "the tracker and the road stage");
   cmd->add_flag("--overlay-on-labels", o->run.overlay_on_labels,
                 "Draw the overlay on the label picture instead of the left image");
   cmd->callback([o, cmd] { run_chain(*o, *cmd); });

@@ -1,100 +1,25 @@
 // SPDX-License-Identifier: Apache-2.0
 // `scw sim`: the whole pipeline clocked in sim/ (host/pipeline/sim_run.hpp); per-stage busy
 // time, frame period and latency printed beside the thesis's Table 5.7.
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
-#include "host/app/run.hpp"
 #include "host/cli/commands.hpp"
 #include "host/cli/shard_option.hpp"
 #include "host/cli/value_checks.hpp"
 #include "host/io/json_file.hpp"
-#include "host/pipeline/sim_run.hpp"
-#include "host/pipeline/thesis_figures.hpp"
+#include "host/pipeline/sim_split.hpp"
+#include "host/pipeline/sim_text.hpp"
 
 namespace scw::cli {
-namespace {
-
-namespace thesis = host::pipeline::thesis;
-using thesis::ms;
-
-void print_line(const char* name, std::int64_t cycles, const thesis::ChainTime* t) {
-  std::cout << std::left << std::setw(24) << name << std::right << std::setw(12) << cycles
-            << std::setw(10) << ms(cycles) << " | ";
-  if (t) std::cout << std::setw(15) << t->fpga << std::setw(7) << t->gpu << std::setw(7) << t->cpu;
-  std::cout << "\n";
-}
-
-void print_timing(const host::pipeline::SimRun& r) {
-  const auto& t = r.timing;
-  std::cout << std::fixed << std::setprecision(3) << "\n"
-            << r.options.config << " configuration, " << r.width << " x " << r.height
-            << ", window " << r.window << ", disparities " << r.dmin << " .. "
-            << r.dmin + r.num_disp - 1 << " (" << disparity::mode_name(r.mode) << " mode), P = "
-            << r.ppc << ", engine " << r.engine << ", " << thesis::kClockMhz << " MHz\n\n";
-  std::cout << std::left << std::setw(24) << "" << std::right << std::setw(12) << "cycles"
-            << std::setw(10) << "ms" << " | thesis: " << std::setw(7) << "FPGA" << std::setw(7)
-            << "GPU" << std::setw(7) << "CPU" << "  (ms, Table 5.7)\n";
-  if (t.stages.empty()) std::cout << "(one Verilated top: the blocks inside it are not seen)\n";
-  for (const auto& row : thesis::kTable57) {
-    if (t.stages.empty()) break;
-    std::int64_t busy = 0;
-    for (const auto& s : t.stages)
-      if (s.name == row.block) busy = s.busy();
-    const thesis::ChainTime times{row.cpu, row.gpu, row.fpga};
-    print_line(row.name, busy, &times);
-  }
-  print_line("frame period T_P", t.period, &thesis::kPeriodMs);
-  print_line("latency T_L, first beat", t.latency_first, &thesis::kLatencyMs);
-  print_line("latency T_L, last beat", t.latency_last, nullptr);
-  if (r.slowest) {
-    const auto ms_at = [&](std::int64_t c) { return c / (r.slowest->fmax_mhz * 1000.0); };
-    std::cout << "\nat the estimated Fmax of the slowest module, " << r.slowest->module << " ("
-              << r.slowest->sta_ps << " ps of logic, " << std::setprecision(1)
-              << r.slowest->fmax_mhz << " MHz, docs/timing.md):" << std::setprecision(3)
-              << " T_P " << ms_at(t.period) << " ms, T_L " << ms_at(t.latency_first)
-              << " ms (thesis FPGA: " << thesis::kPeriodMs.fpga << " / "
-              << thesis::kLatencyMs.fpga << " ms at 125 MHz)\n";
-  }
-}
-
-void print_frames(const host::pipeline::SimRun& r) {
-  const auto& t = r.timing;
-  std::cout << "\nbusy = a block's first beat in to its last beat out, last frame; T_P = "
-               "between the last two results; T_L = the last frame's.\n";
-  if (!t.stages.empty()) {
-    std::cout << "every block, per frame (cycles from the first input beat):\n";
-    for (const auto& s : t.stages)
-      std::cout << "  " << std::left << std::setw(16) << s.name << std::right << std::setw(10)
-                << s.first_in << " .. " << std::setw(10) << s.last_out << "\n";
-    std::cout << "FIFOs (depth, most held):";
-    for (const auto& f : r.report.fifos)
-      std::cout << " " << f.name << " " << f.depth << "/" << f.max_occupancy;
-    std::cout << "\n";
-  }
-  for (std::size_t k = 0; k < t.frames.size(); ++k) {
-    const auto& f = t.frames[k];
-    const auto& res = r.results[k].frame;
-    std::cout << "frame " << k << ": in " << f.first_in << " .. " << f.last_in << ", result "
-              << f.result << ": " << app::severity_name(res.severity) << ", " << res.objects
-              << " objects"
-              << (res.index != 0xffff
-                      ? ", deciding at " + std::to_string(res.distance_mm / 1000.0) + " m"
-                      : std::string())
-              << "\n";
-  }
-  if (r.reference) std::cout << r.reference->text() << "\n";
-}
-
-}  // namespace
 
 void add_sim_command(CLI::App& app) {
   struct Options {
     host::pipeline::SimOptions sim;
-    std::string json;
+    std::string json, out_dir, shard;
+    int segments = 0;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -136,16 +61,41 @@ void add_sim_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--reference", s.reference,
                 "also run the floating-point chain on the pair and compare the frame result");
-  add_refused_shard_option(cmd, kSimNoShard);
-  cmd->callback([o] {
+  cmd->add_option("--out-dir", o->out_dir,
+                  "write frames.jsonl (every frame's cycles and result) and segments.jsonl (each "
+                  "segment's timing) here");
+  add_shard_option(cmd, o->shard, "frames of --frames")->needs("--out-dir");
+  add_segments_option(cmd, o->segments, "the pipeline (a fresh one, clocked from cycle 0)");
+  cmd->callback([o, cmd] {
+    namespace pipeline = host::pipeline;
     try {
-      const auto r = host::pipeline::run_sim(o->sim, std::cerr);
-      print_timing(r);
-      print_frames(r);
+      if (o->sim.frames < 1) throw std::invalid_argument("--frames must be at least 1");
+      const app::SequenceSplit split{shard_of(o->shard), o->segments};
+      const auto plan = app::plan_split(split, static_cast<std::size_t>(o->sim.frames));
+      if (!o->json.empty() && app::segments_of(plan).size() != 1)
+        throw std::invalid_argument(
+            "--json writes one run's report; with --segments or --shard "
+            "use --out-dir (segments.jsonl has each segment's)");
+      if (!o->out_dir.empty()) remove_old_manifest(o->out_dir);
+      const auto segments = pipeline::run_sim_split(o->sim, split, std::cerr);
+      for (const auto& seg : segments)
+        pipeline::print_sim_run(seg.run, seg.frames.begin, std::cout);
       if (!o->json.empty()) {
-        host::io::write_json(o->json, host::pipeline::sim_json(r));
+        host::io::write_json(o->json, pipeline::sim_json(segments.front().run));
         std::cerr << "wrote " << o->json << "\n";
       }
+      if (o->out_dir.empty()) return;
+      pipeline::write_sim_split(segments, o->out_dir);
+      write_manifest_if_sharded(o->shard, *cmd, {"out-dir"},
+                                {"",
+                                 {},
+                                 {},
+                                 static_cast<std::size_t>(o->sim.frames),
+                                 "frames",
+                                 "",
+                                 pipeline::sim_split_files()},
+                                o->out_dir);
+      std::cerr << "wrote " << o->out_dir << " (frames.jsonl, segments.jsonl)\n";
     } catch (const std::invalid_argument& e) {
       std::cerr << "scw sim: " << e.what() << "\n";
       throw CLI::RuntimeError(2);

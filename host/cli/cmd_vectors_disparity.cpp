@@ -18,7 +18,8 @@ namespace vec = scw::vectors;
 void add_vectors_disparity_command(CLI::App& vectors) {
   struct Options {
     int frames = 0;  // 0: as given
-    std::string preset, out, mode = "opencv";
+    std::string preset, mode = "opencv";
+    SetOut set;
     std::string data_dir = "data/tsukuba";
     vec::UserPair pair;
     std::vector<int> roi;
@@ -62,9 +63,9 @@ void add_vectors_disparity_command(CLI::App& vectors) {
   cmd->add_option("--edge-candidates", o->pair.edge_candidates,
                   "With --left/--right: decide the left edge band from K candidates (0: blind)");
   add_set_frames_option(cmd, o->frames);
-  add_set_out_options(cmd, o->out);
+  add_set_out_options(cmd, o->set);
   cmd->add_option("--data-dir", o->data_dir, "Folder with the Tsukuba PPMs");
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
     if (o->preset.empty() && o->pair.left.empty())
       throw CLI::ValidationError("give --preset NAME, or your pair with --left L --right R");
     vec::DisparityFrame f;
@@ -79,15 +80,21 @@ void add_vectors_disparity_command(CLI::App& vectors) {
       vec::repeat_frames(f.left, o->frames);
       vec::repeat_frames(f.right, o->frames);
     }
-    const auto s = vec::write_disparity_set(f, o->out);
-    std::cout << "C++ model: " << s.beats << " beats equal the direct reference (" << s.cycles
-              << " cycles)\n";
-    if (s.known_shifts)
-      std::cout << "known shifts: " << s.shifts_right << " of " << s.shifts_valid
-                << " computed pixels find their true disparity\n";
-    std::cout << "wrote " << o->out << "/ (" << s.frames << " frame(s) of " << s.width << "x"
-              << s.height << ", " << s.build << " build, P = " << s.ppc << ", N = " << s.window
-              << ", d " << s.dmin << ".." << s.dmax << ", " << s.mode << " mode)\n";
+    write_set_parts(*cmd, o->set, f.left.size(), [&](const auto& r, const auto& dir) {
+      auto part = f;
+      part.left = vec::frames_in(f.left, r);
+      part.right = vec::frames_in(f.right, r);
+      const auto s = vec::write_disparity_set(part, dir);
+      std::cout << "C++ model: " << s.beats << " beats equal the direct reference (" << s.cycles
+                << " cycles)\n";
+      if (s.known_shifts)
+        std::cout << "known shifts: " << s.shifts_right << " of " << s.shifts_valid
+                  << " computed pixels find their true disparity\n";
+      std::cout << "wrote " << dir.string() << "/ (" << s.frames << " frame(s) of " << s.width
+                << "x" << s.height << ", " << s.build << " build, P = " << s.ppc
+                << ", N = " << s.window << ", d " << s.dmin << ".." << s.dmax << ", " << s.mode
+                << " mode)\n";
+    });
   });
 }
 

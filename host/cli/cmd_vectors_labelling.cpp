@@ -18,7 +18,8 @@ namespace vec = scw::vectors;
 void add_vectors_labelling_command(CLI::App& vectors) {
   struct Options {
     int frames = 0;  // 0: as given
-    std::string preset, out;
+    std::string preset;
+    SetOut set;
     std::string data_dir = "data/tsukuba";
     vec::UserMap map;
     std::vector<int> roi, tiles;
@@ -50,9 +51,9 @@ void add_vectors_labelling_command(CLI::App& vectors) {
   cmd->add_option("--floor", o->map.floor, "With --disparity: the lowest valid value (Q11.4)");
   cmd->add_option("--min-area", o->map.min_area, "With --disparity: the smallest object");
   add_set_frames_option(cmd, o->frames);
-  add_set_out_options(cmd, o->out);
+  add_set_out_options(cmd, o->set);
   cmd->add_option("--data-dir", o->data_dir, "Folder with truedisp.row3.col3.pgm");
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
     if (o->preset.empty() && o->map.disparity.empty())
       throw CLI::ValidationError("give --preset NAME, or your maps with --disparity FILE ...");
     vec::LabellingPreset p;
@@ -67,12 +68,16 @@ void add_vectors_labelling_command(CLI::App& vectors) {
       p = vec::labelling_frames(o->map);
     }
     if (o->frames > 0) vec::repeat_frames(p.frames, o->frames);
-    const auto s = vec::write_labelling_set(p, o->out);
-    std::cout << "C++ model: " << s.frames << " frames, " << s.words
-              << " words, checked against the flood-fill reference (" << s.cycles << " cycles)\n";
-    std::cout << "wrote " << o->out << "/ (" << s.frames << " frames of " << s.width << "x"
-              << s.height << ", " << s.tiles_x << "x" << s.tiles_y << " tiles, " << s.objects
-              << " objects, " << s.words << " words)\n";
+    write_set_parts(*cmd, o->set, p.frames.size(), [&](const auto& r, const auto& dir) {
+      auto part = p;
+      part.frames = vec::frames_in(p.frames, r);
+      const auto s = vec::write_labelling_set(part, dir);
+      std::cout << "C++ model: " << s.frames << " frames, " << s.words
+                << " words, checked against the flood-fill reference (" << s.cycles << " cycles)\n";
+      std::cout << "wrote " << dir.string() << "/ (" << s.frames << " frames of " << s.width << "x"
+                << s.height << ", " << s.tiles_x << "x" << s.tiles_y << " tiles, " << s.objects
+                << " objects, " << s.words << " words)\n";
+    });
   });
 }
 

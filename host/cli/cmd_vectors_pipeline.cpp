@@ -20,7 +20,8 @@ void add_vectors_pipeline_command(CLI::App& vectors) {
   struct Options {
     vec::PipelineSetOptions set;
     std::vector<std::string> left, right;
-    std::string sequence, out, engine = "rtl";
+    std::string sequence, engine = "rtl";
+    SetOut out;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = vectors.add_subcommand(
@@ -62,7 +63,7 @@ void add_vectors_pipeline_command(CLI::App& vectors) {
                   "to equal the C++ chain's; cpp: the C++ chain only")
       ->check(CLI::IsMember({"cpp", "rtl"}));
   add_set_out_options(cmd, o->out);
-  cmd->callback([o, frames] {
+  cmd->callback([o, cmd, frames] {
     vec::PipelineSetOptions s = o->set;
     s.height = s.width / 2;
     s.rtl = o->engine == "rtl";
@@ -77,11 +78,17 @@ void add_vectors_pipeline_command(CLI::App& vectors) {
     }
     for (const auto& f : o->left) s.left.push_back(host::io::read_grey_image(f));
     for (const auto& f : o->right) s.right.push_back(host::io::read_grey_image(f));
-    const auto sum = vec::write_pipeline_set(
-        s, o->out, [](const std::string& line) { std::cout << line << "\n"; });
-    std::cout << "wrote " << o->out << "/ (" << sum.frames << " frames of " << sum.width << "x"
-              << sum.height << ", P = " << sum.ppc << ", " << sum.raw_beats
-              << " raw beats a camera, " << sum.object_words << " object words)\n";
+    vec::add_synthetic_frames(s);
+    write_set_parts(*cmd, o->out, s.left.size(), [&](const auto& r, const auto& dir) {
+      auto part = s;
+      part.left = vec::frames_in(s.left, r);
+      part.right = vec::frames_in(s.right, r);
+      const auto sum = vec::write_pipeline_set(
+          part, dir, [](const std::string& line) { std::cout << line << "\n"; });
+      std::cout << "wrote " << dir.string() << "/ (" << sum.frames << " frames of " << sum.width
+                << "x" << sum.height << ", P = " << sum.ppc << ", " << sum.raw_beats
+                << " raw beats a camera, " << sum.object_words << " object words)\n";
+    });
   });
 }
 

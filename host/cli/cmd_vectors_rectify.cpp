@@ -50,7 +50,8 @@ void print(const vec::RectifySetSummary& s, const std::string& out) {
 void add_vectors_rectify_command(CLI::App& vectors) {
   struct Options {
     int frames = 0;  // 0: as given
-    std::string preset, out;
+    std::string preset;
+    SetOut set;
     int ppc = vec::kRectifyVecRtlPpc;
     std::string engine = "rtl", stalls = "both", data_dir = "data/chessboard", build = "vectors";
     vec::UserCalibratedPair pair;
@@ -96,7 +97,7 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                   "and --size pick a band: this calibration's whole image needs 81 raw rows")
       ->check(CLI::IsMember(vec::rectify_builds()));
   add_set_frames_option(cmd, o->frames);
-  add_set_out_options(cmd, o->out);
+  add_set_out_options(cmd, o->set);
   cmd->add_option("--data-dir", o->data_dir,
                   "Folder with left01.jpg, right01.jpg and derived_stereo_calibration_helper.yml");
   cmd->add_option("--roi", o->roi,
@@ -106,7 +107,7 @@ void add_vectors_rectify_command(CLI::App& vectors) {
                   "Chessboard or your pair: W H of the rectified ROI (default 128 96; --config "
                   "thesis: the whole image from 0 0)")
       ->expected(2);
-  cmd->callback([o] {
+  cmd->callback([o, cmd] {
     if (o->preset.empty() && o->pair.left.empty())
       throw CLI::ValidationError(
           "give --preset NAME, or your raw pair with --left L --right R --calib C");
@@ -125,7 +126,12 @@ void add_vectors_rectify_command(CLI::App& vectors) {
     const std::string name = o->preset.empty() ? o->camera + " camera" : o->preset;
     const vec::RectifyRtl engine = rtl ? vec::RectifyRtl(run_rtl) : vec::RectifyRtl();
     if (o->frames > 0) vec::repeat_frames(f.raw, o->frames);
-    print(vec::write_rectify_set(f, name, o->ppc, stalls, engine, o->out, o->build), o->out);
+    write_set_parts(*cmd, o->set, f.raw.size(), [&](const auto& r, const auto& dir) {
+      auto part = f;
+      part.raw = vec::frames_in(f.raw, r);
+      print(vec::write_rectify_set(part, name, o->ppc, stalls, engine, dir, o->build),
+            dir.string());
+    });
   });
 }
 

@@ -17,7 +17,8 @@ namespace vec = scw::vectors;
 void add_vectors_road_command(CLI::App& vectors) {
   struct Options {
     int frames = 0;  // 0: as given
-    std::string preset, out;
+    std::string preset;
+    SetOut set;
     vec::UserRoadMaps maps;
     std::vector<int> roi;
   };
@@ -69,24 +70,28 @@ void add_vectors_road_command(CLI::App& vectors) {
   cmd->add_option("--ppc", m.ppc, "With --config small, tsukuba or thesis: pixels a beat")
       ->check(CLI::IsMember({1, 2, 4}));
   add_set_frames_option(cmd, o->frames);
-  add_set_out_options(cmd, o->out);
-  cmd->callback([o] {
+  add_set_out_options(cmd, o->set);
+  cmd->callback([o, cmd] {
     if (o->preset.empty() && o->maps.disparity.empty())
       throw CLI::ValidationError("give --preset NAME, or your maps with --disparity FILE ...");
     if (!o->roi.empty()) o->maps.roi = cv::Rect(o->roi[0], o->roi[1], o->roi[2], o->roi[3]);
     auto seq = o->preset.empty() ? vec::road_frames(o->maps) : vec::road_preset(o->preset);
     if (o->frames > 0) vec::repeat_frames(seq.frames, o->frames);
-    const auto s = vec::write_road_set(seq, o->out);
-    std::cout << "C++ model: " << s.frames << " frames, " << s.beats << " beats, " << s.cycles
-              << " cycles; " << s.fits << " fits changed the road; " << s.removed
-              << " pixels removed, equal to the floating-point reference's";
-    if (s.band_edge > 0) std::cout << " but " << s.band_edge << " at a band's edge";
-    std::cout << "; roads within " << s.road_error_px << " px of the reference's\n";
-    for (std::size_t f = 0; f < s.roads.size(); ++f)
-      std::cout << "  frame " << f << ": road a " << s.roads[f].a << " b " << s.roads[f].b
-                << ", its pixels' fit: " << vec::road_fit_name(s.verdicts[f]) << "\n";
-    std::cout << "wrote " << o->out << "/ (" << s.frames << " frames of " << s.width << "x"
-              << s.height << ", P = " << s.ppc << ")\n";
+    write_set_parts(*cmd, o->set, seq.frames.size(), [&](const auto& r, const auto& dir) {
+      auto part = seq;
+      part.frames = vec::frames_in(seq.frames, r);
+      const auto s = vec::write_road_set(part, dir);
+      std::cout << "C++ model: " << s.frames << " frames, " << s.beats << " beats, " << s.cycles
+                << " cycles; " << s.fits << " fits changed the road; " << s.removed
+                << " pixels removed, equal to the floating-point reference's";
+      if (s.band_edge > 0) std::cout << " but " << s.band_edge << " at a band's edge";
+      std::cout << "; roads within " << s.road_error_px << " px of the reference's\n";
+      for (std::size_t f = 0; f < s.roads.size(); ++f)
+        std::cout << "  frame " << f << ": road a " << s.roads[f].a << " b " << s.roads[f].b
+                  << ", its pixels' fit: " << vec::road_fit_name(s.verdicts[f]) << "\n";
+      std::cout << "wrote " << dir.string() << "/ (" << s.frames << " frames of " << s.width << "x"
+                << s.height << ", P = " << s.ppc << ")\n";
+    });
   });
 }
 

@@ -18,7 +18,8 @@ namespace vec = scw::vectors;
 void add_vectors_warning_command(CLI::App& vectors) {
   struct Options {
     int frames = 0;  // 0: as given
-    std::string preset, out, rule = "spread";
+    std::string preset, rule = "spread";
+    SetOut set;
     vec::UserTables user;
     std::vector<int> size;
   };
@@ -70,8 +71,8 @@ void add_vectors_warning_command(CLI::App& vectors) {
                   "committed sets), or the pipeline's small, tsukuba (32 px) or thesis (128 px)")
       ->check(CLI::IsMember(vec::warning_builds()));
   add_set_frames_option(cmd, o->frames);
-  add_set_out_options(cmd, o->out);
-  cmd->callback([o] {
+  add_set_out_options(cmd, o->set);
+  cmd->callback([o, cmd] {
     if (o->preset.empty() && o->user.objects.empty())
       throw CLI::ValidationError("give --preset NAME, or your tables with --objects FILE.csv");
     if (!o->size.empty()) {
@@ -82,12 +83,16 @@ void add_vectors_warning_command(CLI::App& vectors) {
                                                        : hls::warning::DistanceRule::kSpread;
     auto p = o->preset.empty() ? vec::warning_user_preset(o->user) : vec::warning_preset(o->preset);
     if (o->frames > 0) vec::repeat_frames(p.frames, o->frames);
-    const auto s = vec::write_warning_set(p, o->out);
-    std::cout << "C++ model: " << s.frames << " frames, " << s.words_in << " words in, "
-              << s.results << " results, checked against a plain fold of evaluate() (" << s.cycles
-              << " cycles)\n";
-    std::cout << "wrote " << o->out << "/ (" << s.frames << " frames, " << s.words_in
-              << " words in, " << s.objects << " objects, " << s.results << " results)\n";
+    write_set_parts(*cmd, o->set, p.frames.size(), [&](const auto& r, const auto& dir) {
+      auto part = p;
+      part.frames = vec::frames_in(p.frames, r);
+      const auto s = vec::write_warning_set(part, dir);
+      std::cout << "C++ model: " << s.frames << " frames, " << s.words_in << " words in, "
+                << s.results << " results, checked against a plain fold of evaluate() (" << s.cycles
+                << " cycles)\n";
+      std::cout << "wrote " << dir.string() << "/ (" << s.frames << " frames, " << s.words_in
+                << " words in, " << s.objects << " objects, " << s.results << " results)\n";
+    });
   });
 }
 

@@ -33,30 +33,22 @@ inline CLI::Option* add_shard_option(CLI::App* cmd, std::string& text, const std
           "I/N", "shard"));
 }
 
-/// What a command's --shard is refused with when its output cannot be split into blocks that join
-/// into one process's (docs/slurm.md, "What does not split").
-inline const char* const kSimNoShard =
-    "scw sim clocks its frames back to back through one pipeline and reports whole-run timing "
-    "(each block's busy span, the frame period between the last two results, the latency, the "
-    "FIFOs' fill): a block of the frames is another run with other figures, and no merge of "
-    "shards gives one process's. Run scw sim in one process (docs/slurm.md)";
+/// What `scw soak`'s --shard is refused with when its output cannot be split into blocks that
+/// join into one process's (docs/slurm.md, "What does not split").
 inline const char* const kSoakNoShard =
     "--shard without --seeds: a soak is one stream, its frames back to back through one Verilated "
     "top under one seeded stall pattern, cycles and the first divergence counted through it, so a "
     "block of its frames is another soak. Split seeds instead: --seeds K --out-dir DIR --shard I/N "
     "(docs/slurm.md)";
-inline const char* const kVectorsNoShard =
-    "a vector set is one stream: each interface's file holds its K frames back to back (the road "
-    "and pipeline sets also carry the road from frame to frame), and one manifest records the "
-    "frame count and every whole file's SHA-256; scw merge does not rewrite a manifest, so sets "
-    "are not split. Make the set in one process (docs/slurm.md)";
 
-/// Adds --shard to a command that cannot be split: any value is refused with `why`.
-inline void add_refused_shard_option(CLI::App* cmd, const std::string& why) {
-  cmd->add_option_function<std::string>(
-         "--shard", [](const std::string&) {}, "Not for this command (docs/slurm.md)")
-      ->check(CLI::Validator([why](std::string& s) { return s + " refused: " + why; }, "I/N",
-                             "no shard"));
+/// Adds --segments to `cmd`: where `restarts` (what carries state from frame to frame) restart.
+inline CLI::Option* add_segments_option(CLI::App* cmd, int& segments, const std::string& restarts) {
+  return cmd
+      ->add_option("--segments", segments,
+                   "Restart " + restarts +
+                       " at the first frame of each of this many blocks (default: N of --shard, "
+                       "else 1; docs/slurm.md)")
+      ->check(CLI::PositiveNumber);
 }
 
 /// The shard `text` names ({0, 1} when empty).

@@ -10,6 +10,8 @@ target_sources(scw_host PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/pipeline/setup.cpp
 # Verilated top.
 add_library(scw_rtl_engine STATIC ${CMAKE_CURRENT_SOURCE_DIR}/pipeline/rtl_engine.cpp
                                   ${CMAKE_CURRENT_SOURCE_DIR}/pipeline/sim_run.cpp
+                                  ${CMAKE_CURRENT_SOURCE_DIR}/pipeline/sim_split.cpp
+                                  ${CMAKE_CURRENT_SOURCE_DIR}/pipeline/sim_text.cpp
                                   ${CMAKE_CURRENT_SOURCE_DIR}/vectors/pipeline_set.cpp)
 target_link_libraries(scw_rtl_engine PUBLIC scw::host scw_rtl_pipeline_small)
 if(SCW_THESIS_RTL)

@@ -92,9 +92,11 @@ CfgDrive cfg_drive(const sim::PipelineSetup& s) {
   return d;
 }
 
-/// Synthetic street frames: a car-sized box at the middle of the range to the left, and a
-/// pedestrian-sized box that comes nearer and moves right, frame by frame.
-void synthetic_frames(PipelineSetOptions& o, int dmax) {
+}  // namespace
+
+void add_synthetic_frames(PipelineSetOptions& o) {
+  if (!o.left.empty() || !o.right.empty()) return;
+  const int dmax = sim::small_build::Build<1>::kNumDisp - 1;
   const int w = o.width, h = o.height;
   for (int f = 0; f < o.frames; ++f) {
     const int d = std::min(dmax, dmax / 2 + 2 * f);
@@ -107,6 +109,8 @@ void synthetic_frames(PipelineSetOptions& o, int dmax) {
     o.right.push_back(pair.right);
   }
 }
+
+namespace {
 
 /// The knot port's words as tb_pipeline_replay.sv writes them, one a clock, left camera first:
 /// {right, row << col bits | col, {y, x}}.
@@ -322,7 +326,7 @@ PipelineSetSummary write_pipeline_set(const PipelineSetOptions& opt,
     throw std::invalid_argument("pipeline set: " + std::to_string(o.left.size()) + " left and " +
                                 std::to_string(o.right.size()) + " right frames");
   if (o.left.empty()) {
-    synthetic_frames(o, sim::small_build::Build<1>::kNumDisp - 1);
+    add_synthetic_frames(o);
   } else {
     o.frames = static_cast<int>(o.left.size());
     for (std::size_t i = 0; i < o.left.size(); ++i)

@@ -42,6 +42,11 @@ struct PipelineSetSummary {
 /// The builds write_pipeline_set() takes.
 const std::vector<std::string>& pipeline_set_configs();
 
+/// Synthetic street frames when `o` has no pairs: `o.frames` of `o.width` x `o.height`, a
+/// car-sized box at the middle of the range to the left and a pedestrian-sized box that comes
+/// nearer and moves right, frame by frame, appended to `o.left` and `o.right`.
+void add_synthetic_frames(PipelineSetOptions& o);
+
 /// Runs the frames through the C++ chain of the build (sim::PipelineChain, every block its C++
 /// model), records every stream between the stages, checks the Verilated top against it when
 /// `o.rtl`, and writes the set into `dir`: cfg.hex, knots.hex, left.hex, right.hex, rect_left.hex,

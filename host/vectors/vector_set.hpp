@@ -2,6 +2,7 @@
 // Golden vector sets: a manifest plus hex, image and CSV files that any HDL simulator can replay.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
@@ -52,6 +53,13 @@ void repeat_frames(std::vector<T>& frames, int k) {
   const std::size_t n = frames.size();
   frames.resize(static_cast<std::size_t>(k), frames.front());
   for (std::size_t i = n; i < frames.size(); ++i) frames[i] = frames[i % n];
+}
+
+/// Frames [r.begin, r.end) of `frames` (a segment of a set split by --segments or --shard).
+template <typename T, typename Range>
+std::vector<T> frames_in(const std::vector<T>& frames, const Range& r) {
+  return {frames.begin() + static_cast<std::ptrdiff_t>(r.begin),
+          frames.begin() + static_cast<std::ptrdiff_t>(r.end)};
 }
 
 /// Maps of the user's cropped alike: the crop `roi` (empty: the first map's whole size) of each

@@ -7,20 +7,13 @@
 # settings, and a folder that is no shard, each with its message.
 # usage: shard_run.sh SCW WORK_DIR
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/same_files.sh"
 scw=$1 work=$2
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 "$scw" scene --preset cyclist-crossing --frames 7 --out-dir seq >/dev/null 2>&1
 run=(run --calib seq/calibration.yml --sequence seq --min-disp 12 --max-disp 56 --window 21
      --tiles 8x4 --pictures overlay)
 
-same_files() {  # same_files A B: the same names, every file equal byte for byte
-  diff <(cd "$1" && find . -type f | sort) <(cd "$2" && find . -type f | sort) ||
-    { echo "FAIL: $1 and $2 hold different files"; exit 1; }
-  local f
-  while read -r f; do
-    cmp "$1/$f" "$2/$f" || { echo "FAIL: $f differs"; exit 1; }
-  done < <(cd "$1" && find . -type f)
-}
 refuses() {  # refuses MESSAGE ARGS...: scw merge ARGS fails, saying MESSAGE
   local msg=$1
   shift

@@ -16,6 +16,7 @@
 
 using scw::app::parse_shard;
 using scw::app::plan_split;
+using scw::app::segments_of;
 using scw::app::Shard;
 using scw::app::shard_range;
 
@@ -54,6 +55,18 @@ TEST_CASE("plan_split restarts a shard at its first frame and at the segments in
   const auto finer = plan_split({{1, 2}, 4}, 8);  // --shard 1/2 --segments 4
   CHECK(finer.restarts == std::vector<std::size_t>{4, 6});
   CHECK_THROWS_WITH(plan_split({{0, 3}, 4}, 7), Catch::Contains("give a multiple of N"));
+}
+
+TEST_CASE("segments_of gives each segment of a plan as a block, empty ones left out", "[app]") {
+  const auto segs = segments_of(plan_split({{1, 2}, 4}, 8));  // --shard 1/2 --segments 4
+  REQUIRE(segs.size() == 2);
+  CHECK((segs[0].begin == 4 && segs[0].end == 6));
+  CHECK((segs[1].begin == 6 && segs[1].end == 8));
+  // More segments than frames: a segment would be empty, so there are only as many as frames.
+  const auto few = segments_of(plan_split({{0, 1}, 4}, 2));
+  REQUIRE(few.size() == 2);
+  CHECK((few[0].begin == 0 && few[0].end == 1 && few[1].begin == 1 && few[1].end == 2));
+  CHECK(segments_of(plan_split({{0, 2}, 0}, 1)).empty());  // shard 0 of 2 of one frame: none
 }
 
 TEST_CASE("merge_shards joins results in shard order, an empty shard's too", "[app]") {
