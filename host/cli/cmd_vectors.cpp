@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "host/cli/commands.hpp"
+#include "host/vectors/compare_sets.hpp"
 #include "host/vectors/vector_set.hpp"
 
 namespace scw::cli {
@@ -87,6 +88,28 @@ void run_show(const std::string& dir) {
   }
 }
 
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+void run_compare(const std::string& a, const std::string& b) {
+  const auto c = vec::compare_sets(a, b);
+  for (const auto& p : c.problems) std::cout << "DIFFERS  " << p << "\n";
+  std::cout << b << " against " << a << ": " << c.same.size() << " files equal byte for byte";
+  if (!c.repacked.empty())
+    std::cout << "; " << c.repacked.size() << " at another packing, every field equal ("
+              << joined(c.repacked)
+              << "): a word's layout changed since one set was made; scripts/regen_vectors.sh "
+                 "rewrites the committed sets";
+  std::cout << "\n";
+  if (!c.problems.empty())
+    throw std::runtime_error(std::to_string(c.problems.size()) +
+                             " of the sets' files or manifest "
+                             "entries differ in value (listed above)");
+}
+
 }  // namespace
 
 void add_vectors_command(CLI::App& app) {
@@ -108,6 +131,17 @@ void add_vectors_command(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingDirectory);
   show->callback([show_dir] { run_show(*show_dir); });
+
+  auto pair = std::make_shared<std::vector<std::string>>();
+  CLI::App* compare = cmd->add_subcommand(
+      "compare",
+      "Compare two sets of one preset (e.g. committed and regenerated): byte for byte, or field "
+      "by field where a word's layout differs (docs/vectors.md, \"When a width changes\")");
+  compare->add_option("dirs", *pair, "The two vector set directories")
+      ->required()
+      ->expected(2)
+      ->check(CLI::ExistingDirectory);
+  compare->callback([pair] { run_compare(pair->at(0), pair->at(1)); });
 }
 
 }  // namespace scw::cli

@@ -101,13 +101,6 @@ void count_known_shifts(const DisparityFrame& f, const std::vector<std::uint16_t
   }
 }
 
-/// Frames stacked top to bottom in stream order: one image a set.
-cv::Mat stacked(const std::vector<cv::Mat>& frames) {
-  cv::Mat all;
-  cv::vconcat(frames, all);
-  return all;
-}
-
 template <typename Params>
 nlohmann::json config_json(const DisparityFrame& f, std::uint16_t invalid) {
   const DisparityConfig& cfg = f.cfg;
@@ -148,8 +141,8 @@ void write_files(const std::filesystem::path& dir, const DisparityFrame& f,
   // config (disparity_cfg::port_config), its fields in the layout.
   add_config_hex<DisparityConfig>(vw, "cfg.hex", cfg_word, sim::disparity_cfg::kConfigFields,
                                   false);
-  vw.add_image("left.png", "input", stacked(f.left));
-  vw.add_image("right.png", "input", stacked(f.right));
+  vw.add_image("left.png", "input", stacked_frames(f.left));
+  vw.add_image("right.png", "input", stacked_frames(f.right));
   vw.add_hex("left.hex", "input", sim::pack_all(l), pixel_beat_layout(kPpc, 8));
   vw.add_hex("right.hex", "input", sim::pack_all(r), pixel_beat_layout(kPpc, 8));
   vw.add_hex("expected.hex", "expected", sim::pack_all(expect), disp_layout);

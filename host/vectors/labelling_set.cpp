@@ -111,7 +111,7 @@ Preset shapes() {
 constexpr int kCropX = 264;
 constexpr int kCropY = 112;
 
-Preset tsukuba(const std::filesystem::path& data_dir) {
+Preset tsukuba_preset(const std::filesystem::path& data_dir) {
   // Middlebury stores disparity x 16 in 8 bits: already the stage's Q11.4.
   const cv::Mat d =
       host::io::read_tsukuba_truth(data_dir, CV_16UC1)(cv::Rect(kCropX, kCropY, kW, kH)).clone();
@@ -307,13 +307,6 @@ void check_frame(const Preset& p, const LabellingFrame& in, const FrameOut& got)
   }
 }
 
-/// Frames stacked top to bottom in stream order: one image a set.
-cv::Mat stacked(const std::vector<cv::Mat>& frames) {
-  cv::Mat all;
-  cv::vconcat(frames, all);
-  return all;
-}
-
 /// Every frame's beats back to back; `images` gets the frames for in.png.
 template <typename InBeat>
 std::vector<InBeat> stream_beats(const Preset& p, std::vector<cv::Mat>& images) {
@@ -406,7 +399,7 @@ void write_files(const std::filesystem::path& dir, const Preset& p, const nlohma
                                                         sim::labelling_cfg::kConfigFields),
                                   sim::labelling_cfg::kConfigFields, false);
   vw.add_hex("in.hex", "input", in_words, pixel_beat_layout(1, 16));
-  vw.add_image("in.png", "input", stacked(images));
+  vw.add_image("in.png", "input", stacked_frames(images));
   vw.add_hex("expected.hex", "expected", out_words, labelling_word_layout());
   using sim::words::column_names;
   vw.add_csv("expected_objects.csv", "expected",
@@ -414,7 +407,7 @@ void write_files(const std::filesystem::path& dir, const Preset& p, const nlohma
              obj_rows);
   vw.add_csv("expected_status.csv", "expected",
              column_names({"frame", "word"}, sim::labelling_word::kStatusFields), status_rows);
-  vw.add_image("labels.png", "expected", stacked(label_images));
+  vw.add_image("labels.png", "expected", stacked_frames(label_images));
   vw.finish();
 }
 
@@ -427,7 +420,7 @@ const std::vector<std::string>& labelling_presets() {
 
 LabellingPreset labelling_preset(const std::string& name, const std::filesystem::path& data_dir) {
   if (name == "shapes") return shapes();
-  if (name == "tsukuba") return tsukuba(data_dir);
+  if (name == "tsukuba") return tsukuba_preset(data_dir);
   if (name == "overflow") return overflow();
   throw std::invalid_argument("vectors labelling: no preset '" + name +
                               "' (there are: shapes, tsukuba, overflow)");

@@ -13,6 +13,7 @@
 #include "host/rectify/fixed_map.hpp"
 #include "host/rectify/map_grid.hpp"
 #include "host/synth/top_params.hpp"
+#include "host/vectors/labelling_set.hpp"
 #include "host/vectors/vector_set.hpp"
 #include "sim/builds/pipeline_small_rtl.hpp"
 #include "sim/pipeline/pipeline_chain.hpp"
@@ -299,7 +300,11 @@ PipelineSetSummary write_build(const PipelineSetOptions& o, const std::filesyste
   out.add_hex("road.hex", "expected", sim::pack_all(chain.road().recorded()),
               pixel_beat_layout(P, 16));
   const auto objects = sim::pack_all(chain.object_table());
-  out.add_hex("objects.hex", "expected", objects, stream_beat_layout(objects.front().width() - 1));
+  // The object words are the labelling stage's: their layout names its fields (as the labelling
+  // sets' expected.hex), so a set made before a field's width changed compares field by field.
+  if (objects.front().width() != labelling_word_layout().at("data_bits").get<int>() + 1)
+    throw std::logic_error("pipeline set: the object words are not the labelling word");
+  out.add_hex("objects.hex", "expected", objects, labelling_word_layout());
   const auto results = sim::pack_all(chain.results());
   out.add_hex("results.hex", "expected", results, stream_beat_layout(results.front().width() - 1));
   out.finish();

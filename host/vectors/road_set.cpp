@@ -269,12 +269,6 @@ long check_frame_against_reference(const RoadSequence& seq, std::size_t f, const
   return edge;
 }
 
-cv::Mat stacked(const std::vector<cv::Mat>& frames) {
-  cv::Mat all;
-  cv::vconcat(frames, all);
-  return all;
-}
-
 nlohmann::json disparity_layout(int ppc) {
   nlohmann::json l = pixel_beat_layout(ppc, 16);
   l["signed"] = true;
@@ -470,9 +464,9 @@ RoadSetSummary write_set(const RoadSequence& seq, const std::filesystem::path& d
   add_config_hex<RoadConfig>(vw, "cfg.hex", sim::words::pack_word(c, sim::road_cfg::kConfigFields),
                              sim::road_cfg::kConfigFields, false);
   vw.add_hex("in.hex", "input", in_words, disparity_layout(Params::kPpc));
-  vw.add_image("in.png", "input", stacked(in_images));
+  vw.add_image("in.png", "input", stacked_frames(in_images));
   vw.add_hex("expected.hex", "expected", out_words, disparity_layout(Params::kPpc));
-  vw.add_image("expected.png", "expected", stacked(out_images));
+  vw.add_image("expected.png", "expected", stacked_frames(out_images));
   vw.add_csv("expected_roads.csv", "expected",
              {"frame", "first_beat", "road_a", "road_b", "slope_px", "horizon_row", "removed",
               "gate_pixels", "next_fit"},

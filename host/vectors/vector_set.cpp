@@ -11,6 +11,7 @@
 #include <iterator>
 #include <map>
 #include <memory>
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <set>
 #include <stdexcept>
@@ -324,6 +325,12 @@ std::vector<cv::Mat> crop_maps(const std::vector<fs::path>& maps, cv::Rect& roi,
     out.push_back(m(roi).clone());
   }
   return out;
+}
+
+cv::Mat stacked_frames(const std::vector<cv::Mat>& frames) {
+  cv::Mat all;
+  cv::vconcat(frames, all);
+  return all;
 }
 
 std::string crop_text(const cv::Rect& roi) {

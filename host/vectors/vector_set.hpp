@@ -62,6 +62,9 @@ std::vector<T> frames_in(const std::vector<T>& frames, const Range& r) {
           frames.begin() + static_cast<std::ptrdiff_t>(r.end)};
 }
 
+/// The frames one above the other, in order: how a set's PNG holds frames back to back.
+cv::Mat stacked_frames(const std::vector<cv::Mat>& frames);
+
 /// Maps of the user's cropped alike: the crop `roi` (empty: the first map's whole size) of each
 /// 16-bit Q11.4 map (host::io::read_disparity_q4), in order, and `roi` set to the crop used.
 /// `what` names the command in errors. Throws std::invalid_argument naming the map a crop does

@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # Every committed golden vector set replays against its RTL block in both simulators through the
-# one entry point a user runs (scripts/replay.sh; docs/vectors.md, "Replaying a set"): the
+# one entry point a user runs (scripts/replay.sh; docs/vectors.md, "Replaying a set"), as the
+# regeneration test (scw_regen_sets) has just made it from this build, equal to the committed set
+# byte for byte or, after a width change, field for field (tests/vectors/regen_compare.sh): the
 # SystemVerilog in Verilator (2-state), and the block as Yosys writes it in Icarus Verilog
 # (4-state), each with idle input cycles and output backpressure. A new set under vectors/ is
 # replayed by adding its folder; nothing here names a set.
@@ -17,23 +19,24 @@ foreach(_manifest IN LISTS _scw_set_manifests)
   foreach(_sim verilator icarus)
     set(_name "vectors:${_set} replays in ${_sim}")
     add_test(NAME "${_name}"
-             COMMAND bash "${PROJECT_SOURCE_DIR}/scripts/replay.sh" "${_set_dir}"
+             COMMAND bash "${PROJECT_SOURCE_DIR}/scripts/replay.sh" "regen/${_set}"
                      "replay/${_sim}/${_work}" --simulator ${_sim}
              WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
     set_tests_properties("${_name}" PROPERTIES LABELS "vectors;${_sim}" TIMEOUT 300
-                                               ENVIRONMENT "${SCW_REPLAY_ENV}")
+                                               ENVIRONMENT "${SCW_REPLAY_ENV}"
+                                               FIXTURES_REQUIRED scw_regen_sets)
   endforeach()
 endforeach()
 
-# A wrong expected beat in the committed pipeline set must stop both simulators, naming the
+# A wrong expected beat in the (regenerated) pipeline set must stop both simulators, naming the
 # stream, frame, row and column (tests/pipeline/tb/wrong_beat.sh changes one disparity beat).
 add_test(NAME "vectors:a wrong beat in pipeline/small_street fails both simulators, named by stream, frame, row and column"
          COMMAND bash "${PROJECT_SOURCE_DIR}/tests/pipeline/tb/wrong_beat.sh"
-                 "${PROJECT_SOURCE_DIR}/vectors/pipeline/small_street" wrong_beat
+                 regen/pipeline/small_street wrong_beat
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("vectors:a wrong beat in pipeline/small_street fails both simulators, named by stream, frame, row and column"
                      PROPERTIES LABELS "vectors;verilator;icarus" TIMEOUT 300
-                                ENVIRONMENT "${SCW_REPLAY_ENV}")
+                                ENVIRONMENT "${SCW_REPLAY_ENV}" FIXTURES_REQUIRED scw_regen_sets)
 
 # A set made at other widths (a field of scw_pkg.sv changed since) is refused in both simulators
 # with both widths named, not failed on its first word (tests/vectors/stale_set.sh).
@@ -53,11 +56,12 @@ set_tests_properties("${_name}" PROPERTIES LABELS "vectors;verilator;icarus" TIM
 # undriven in the netlist (docs/vectors.md, "The synthesized netlist").
 set(_name "vectors:road/street replays on the synthesized netlist in icarus")
 add_test(NAME "${_name}"
-         COMMAND bash "${PROJECT_SOURCE_DIR}/scripts/replay.sh" "${PROJECT_SOURCE_DIR}/vectors/road/street"
+         COMMAND bash "${PROJECT_SOURCE_DIR}/scripts/replay.sh" regen/road/street
                  "replay/netlist/road_street" --simulator netlist
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties("${_name}" PROPERTIES LABELS "vectors;icarus;yosys" TIMEOUT 300 COST 20
-                                           ENVIRONMENT "${SCW_REPLAY_ENV}")
+                                           ENVIRONMENT "${SCW_REPLAY_ENV}"
+                                           FIXTURES_REQUIRED scw_regen_sets)
 # What it cannot run, it says: a block with block RAM, and the whole top, whose testbench probes
 # the stages inside it.
 add_test(NAME "vectors:a netlist replay refuses a block with block RAM, naming the RAM models"

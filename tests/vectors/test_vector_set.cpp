@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Golden vector sets: round trips, checksums, reproducibility and clear errors on bad input.
+#include <array>
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "host/vectors/compare_sets.hpp"
 #include "host/vectors/vector_set.hpp"
 
 namespace {
@@ -507,4 +509,66 @@ TEST_CASE("reader lookups name what is missing or mismatched", "[vectors]") {
   CHECK_THROWS_WITH(set.read_hex("left.png"), Contains("left.png: is a png file, not hex"));
   CHECK_THROWS_WITH(set.read_image("in.hex"), Contains("not png or pgm"));
   CHECK_THROWS_WITH(set.read_csv("in.hex"), Contains("not csv"));
+}
+
+namespace {
+
+// A set of one hex file of `values` (a, b, c per beat), packed as {c, b, a} from bit 0 with a of
+// `a_bits` bits (unsigned), b of 8 and c of 4 (signed).
+void write_packed_set(const fs::path& dir, int a_bits,
+                      const std::vector<std::array<std::int64_t, 3>>& values) {
+  std::vector<Bits> beats;
+  for (const auto& v : values) {
+    Bits b(a_bits + 12);
+    b.set(0, a_bits, static_cast<std::uint64_t>(v[0]));
+    b.set(a_bits, 8, static_cast<std::uint64_t>(v[1]));
+    b.set(a_bits + 8, 4, static_cast<std::uint64_t>(v[2]) & 0xf);
+    beats.push_back(b);
+  }
+  const json layout = {{"fields",
+                        {{{"name", "a"}, {"lsb", 0}, {"bits", a_bits}},
+                         {{"name", "b"}, {"lsb", a_bits}, {"bits", 8}},
+                         {{"name", "c"}, {"lsb", a_bits + 8}, {"bits", 4}, {"signed", true}}}}};
+  VectorWriter w(dir, "warning", kConfig);
+  w.add_hex("words.hex", "expected", beats, layout);
+  w.finish();
+}
+
+}  // namespace
+
+TEST_CASE("compare_sets: equal bytes, or equal fields at another packing; values must agree",
+          "[vectors]") {
+  using scw::vectors::compare_sets;
+  TempDir tmp;
+  const fs::path a = tmp.path() / "a", wider = tmp.path() / "wider", same = tmp.path() / "same",
+                 changed = tmp.path() / "changed", other = tmp.path() / "other";
+  const std::vector<std::array<std::int64_t, 3>> values = {{5, 200, -1}, {0, 7, 3}};
+  write_packed_set(a, 6, values);
+  write_packed_set(same, 6, values);
+  write_packed_set(wider, 10, values);  // field a 4 bits wider: b and c move up
+  auto edited = values;
+  edited[1][2] = -2;
+  write_packed_set(changed, 10, edited);
+  write_packed_set(other, 6, edited);
+
+  const auto s = compare_sets(a, same);
+  CHECK(s.problems.empty());
+  CHECK(s.same == std::vector<std::string>{"words.hex"});
+  const auto w = compare_sets(a, wider);
+  CHECK(w.problems.empty());
+  CHECK(w.repacked == std::vector<std::string>{"words.hex"});
+  // A value that differs is named by beat and field (c, signed: -1 in 4 bits is 0b1, -2 0b10).
+  const auto c = compare_sets(a, changed);
+  REQUIRE(c.problems.size() == 1);
+  CHECK_THAT(c.problems[0], Contains("beat 1, field 'c'"));
+  // At the same layout, any other byte is a difference: no field by field fallback.
+  const auto o = compare_sets(a, other);
+  REQUIRE(o.problems.size() == 1);
+  CHECK_THAT(o.problems[0], Contains("differs at the same layout"));
+  // A file changed after its set was written is named, whatever the other set holds.
+  spit(same / "words.hex", slurp(other / "words.hex"));
+  const auto t = compare_sets(a, same);
+  REQUIRE_FALSE(t.problems.empty());
+  CHECK_THAT(t.problems[0], Contains("SHA-256 mismatch"));
+  CHECK_THROWS_WITH(compare_sets(a, tmp.path() / "none"), Contains("holds no manifest.json"));
 }
