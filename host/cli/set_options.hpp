@@ -34,9 +34,7 @@ inline void add_set_out_options(CLI::App* cmd, SetOut& o) {
                   "segment, in OUT/frames_FIRST-LAST)")
       ->required();
   add_shard_option(cmd, o.shard, "frames");
-  add_segments_option(cmd, o.segments,
-                      "the stream: each block is a set of its own, from reset (the road stage's "
-                      "road too)");
+  add_segments_option(cmd, o.segments, "the stream (a block a set of its own, from reset)");
 }
 
 /// Writes the set of `frames` frames (after --frames) into --out, or, split into segments, one set

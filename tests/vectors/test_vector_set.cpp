@@ -536,7 +536,7 @@ void write_packed_set(const fs::path& dir, int a_bits,
 
 }  // namespace
 
-TEST_CASE("compare_sets: equal bytes, or equal fields at another packing; values must agree",
+TEST_CASE("compare_sets: equal bytes, or equal fields at another packing, and values must agree",
           "[vectors]") {
   using scw::vectors::compare_sets;
   TempDir tmp;
