@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 #include "host/cli/shard_option.hpp"
@@ -50,7 +51,17 @@ void write_set_parts(const CLI::App& cmd, const SetOut& o, std::size_t frames, W
   for (const app::ItemRange& r : app::segments_of(plan)) {
     char name[48];
     std::snprintf(name, sizeof name, "frames_%04zu-%04zu", r.begin, r.end - 1);
-    write(r, whole ? std::filesystem::path(o.out) : std::filesystem::path(o.out) / name);
+    if (whole) {
+      write(r, std::filesystem::path(o.out));
+      continue;
+    }
+    try {
+      write(r, std::filesystem::path(o.out) / name);
+    } catch (const std::invalid_argument& e) {  // name the segment: its frames, not the preset's
+      throw std::invalid_argument(std::string(name) + ", a segment of " + std::to_string(frames) +
+                                  " frames: " + e.what() +
+                                  " (give fewer --segments or more --frames)");
+    }
   }
   std::filesystem::create_directories(o.out);  // a shard with no frames leaves its folder too
   write_manifest_if_sharded(o.shard, cmd, {"out"}, {"", {}, {}, frames, "frames", "", {}}, o.out);

@@ -148,7 +148,7 @@ SetComparison compare_sets(const fs::path& a, const fs::path& b) {
   SetComparison c;
   for (const char* key : {"format", "stage", "description", "config"})
     if (ma.value(key, json()) != mb.value(key, json()))
-      c.problems.push_back(std::string("the manifests' ") + key + " differ");
+      c.problems.push_back(std::string("the manifests differ in ") + key);
   const json& files_a = ma.at("files");
   const json& files_b = mb.at("files");
   if (files_a.size() != files_b.size()) {
