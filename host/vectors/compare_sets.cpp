@@ -4,10 +4,10 @@
 
 #include <fstream>
 #include <iterator>
-#include <utility>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <utility>
 
 #include "host/vectors/vector_set.hpp"
 
@@ -145,6 +145,8 @@ std::string compare_fields(const fs::path& fa, const json& la, const fs::path& f
 
 SetComparison compare_sets(const fs::path& a, const fs::path& b) {
   const json ma = read_json(a), mb = read_json(b);
+  read_manifest(a);  // each a valid manifest, or an error naming the field at fault
+  read_manifest(b);
   SetComparison c;
   for (const char* key : {"format", "stage", "description", "config"})
     if (ma.value(key, json()) != mb.value(key, json()))
@@ -183,8 +185,13 @@ SetComparison compare_sets(const fs::path& a, const fs::path& b) {
       c.problems.push_back(name + " differs at the same layout");
       continue;
     }
-    const std::string why = compare_fields(a / name, meta_a.value("layout", json::object()),
-                                           b / name, meta_b.value("layout", json::object()));
+    std::string why;
+    try {
+      why = compare_fields(a / name, meta_a.value("layout", json::object()), b / name,
+                           meta_b.value("layout", json::object()));
+    } catch (const std::exception& e) {  // a layout without a field's name, lsb or bits
+      why = std::string("its layout cannot be read (") + e.what() + ")";
+    }
     if (why.empty())
       c.repacked.push_back(name);
     else
