@@ -37,7 +37,7 @@ ItemRange shard_range(const Shard& s, std::size_t total) {
 }
 
 SplitPlan plan_split(const SequenceSplit& split, std::size_t frames) {
-  const int segments = split.segments == 0 ? split.shard.count : split.segments;
+  const int segments = segment_count(split);
   if (segments < 1 || segments % split.shard.count != 0)
     throw std::invalid_argument("--segments " + std::to_string(segments) + " with --shard " +
                                 std::to_string(split.shard.index) + "/" +

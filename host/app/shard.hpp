@@ -41,6 +41,11 @@ struct SequenceSplit {
   int segments = 0;  // 0: shard.count; otherwise a multiple of shard.count
 };
 
+/// The number of segments `split` asks for: `segments`, or N of its shard when 0.
+inline int segment_count(const SequenceSplit& split) {
+  return split.segments == 0 ? split.shard.count : split.segments;
+}
+
 /// The frames [begin, end) a process runs of `frames`, and at which of them it restarts the
 /// state. Throws std::invalid_argument when `segments` is not a multiple of the shard count.
 struct SplitPlan {

@@ -69,10 +69,8 @@ void add_sim_command(CLI::App& app) {
   cmd->callback([o, cmd] {
     namespace pipeline = host::pipeline;
     try {
-      if (o->sim.frames < 1) throw std::invalid_argument("--frames must be at least 1");
       const app::SequenceSplit split{shard_of(o->shard), o->segments};
-      const auto plan = app::plan_split(split, static_cast<std::size_t>(o->sim.frames));
-      if (!o->json.empty() && app::segments_of(plan).size() != 1)
+      if (!o->json.empty() && pipeline::sim_segments(o->sim, split).size() != 1)
         throw std::invalid_argument(
             "--json writes one run's report; with --segments or --shard "
             "use --out-dir (segments.jsonl has each segment's)");
@@ -86,15 +84,10 @@ void add_sim_command(CLI::App& app) {
       }
       if (o->out_dir.empty()) return;
       pipeline::write_sim_split(segments, o->out_dir);
-      write_manifest_if_sharded(o->shard, *cmd, {"out-dir"},
-                                {"",
-                                 {},
-                                 {},
-                                 static_cast<std::size_t>(o->sim.frames),
-                                 "frames",
-                                 "",
-                                 pipeline::sim_split_files()},
-                                o->out_dir);
+      app::ShardManifest m;
+      m.total = static_cast<std::size_t>(o->sim.frames);
+      m.concatenate = pipeline::sim_split_files();
+      write_manifest_if_sharded(o->shard, *cmd, {"out-dir"}, m, o->out_dir);
       std::cerr << "wrote " << o->out_dir << " (frames.jsonl, segments.jsonl)\n";
     } catch (const std::invalid_argument& e) {
       std::cerr << "scw sim: " << e.what() << "\n";

@@ -46,7 +46,7 @@ template <typename Write>
 void write_set_parts(const CLI::App& cmd, const SetOut& o, std::size_t frames, Write&& write) {
   const app::SequenceSplit split{shard_of(o.shard), o.segments};
   const auto plan = app::plan_split(split, frames);
-  const bool whole = (o.segments == 0 ? split.shard.count : o.segments) == 1;
+  const bool whole = app::segment_count(split) == 1;
   if (!o.shard.empty()) remove_old_manifest(o.out);
   for (const app::ItemRange& r : app::segments_of(plan)) {
     char name[48];

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// run_sim_split() and write_sim_split() (host/pipeline/sim_split.hpp).
+// sim_segments(), run_sim_split() and write_sim_split() (host/pipeline/sim_split.hpp).
 #include "host/pipeline/sim_split.hpp"
 
 #include <fstream>
@@ -10,12 +10,15 @@ namespace scw::host::pipeline {
 
 namespace fs = std::filesystem;
 
+std::vector<app::ItemRange> sim_segments(const SimOptions& o, const app::SequenceSplit& split) {
+  if (o.frames < 1) throw std::invalid_argument("--frames must be at least 1");
+  return app::segments_of(app::plan_split(split, static_cast<std::size_t>(o.frames)));
+}
+
 std::vector<SimSegment> run_sim_split(const SimOptions& o, const app::SequenceSplit& split,
                                       std::ostream& log) {
-  if (o.frames < 1) throw std::invalid_argument("--frames must be at least 1");
-  const auto plan = app::plan_split(split, static_cast<std::size_t>(o.frames));
   std::vector<SimSegment> segments;
-  for (const app::ItemRange& r : app::segments_of(plan)) {
+  for (const app::ItemRange& r : sim_segments(o, split)) {
     if (r.size() != static_cast<std::size_t>(o.frames))  // a segment, not the whole run
       log << "frames " << r.begin << " .. " << r.end - 1 << " of " << o.frames
           << ": a fresh pipeline\n";

@@ -20,8 +20,11 @@ struct SimSegment {
   SimRun run;
 };
 
-/// Runs the segments of `split`'s shard of `o.frames` frames, each run_sim() of its frames.
-/// Throws what run_sim() and app::plan_split() throw.
+/// The segments of `split`'s shard of `o.frames` frames (app::segments_of). Throws
+/// std::invalid_argument for fewer than 1 frame and what app::plan_split() throws.
+std::vector<app::ItemRange> sim_segments(const SimOptions& o, const app::SequenceSplit& split);
+
+/// Runs sim_segments(), each run_sim() of its frames. Throws what those two throw.
 std::vector<SimSegment> run_sim_split(const SimOptions& o, const app::SequenceSplit& split,
                                       std::ostream& log);
 

@@ -19,14 +19,14 @@ struct SetComparison {
   std::vector<std::string> problems;  // what differs; empty when the sets agree
 };
 
-/// Compares set `b` with set `a`: their manifests must agree in format, stage, description,
-/// config and file list (names, roles, kinds); every file must be what its own manifest says
-/// (verify_file()); each file must be equal byte for byte, except a
-/// hex file whose layout (word width, or a field's place or width) differs, which must have as
-/// many beats and, beat by beat, every field of the same name equal in value (nested word
-/// tables, such as a labelling word's object and status fields, decoded by its discriminating
-/// bit). A file whose bytes differ at the same layout is a problem, as is a layout without
-/// fields. Throws std::runtime_error when a folder holds no readable manifest.
+/// Compares set `b` with set `a`. Both are opened as VectorSet::open() does: a valid manifest,
+/// every file verified (its SHA-256 and shape), or std::runtime_error naming the first problem.
+/// Their manifests must agree in stage, description, config and file list (names, roles,
+/// kinds); each file must be equal byte for byte, except a hex file whose layout (word width, or
+/// a field's place or width) differs, which must have as many beats and, beat by beat, every
+/// field of the same name equal in value (nested word tables, such as a labelling word's object
+/// and status fields, decoded by its discriminating bit). A file whose bytes differ at the same
+/// layout is a problem, as is a layout without fields.
 SetComparison compare_sets(const std::filesystem::path& a, const std::filesystem::path& b);
 
 }  // namespace scw::vectors

@@ -567,8 +567,6 @@ TEST_CASE("compare_sets: equal bytes, or equal fields at another packing, and va
   CHECK_THAT(o.problems[0], Contains("differs at the same layout"));
   // A file changed after its set was written is named, whatever the other set holds.
   spit(same / "words.hex", slurp(other / "words.hex"));
-  const auto t = compare_sets(a, same);
-  REQUIRE_FALSE(t.problems.empty());
-  CHECK_THAT(t.problems[0], Contains("SHA-256 mismatch"));
-  CHECK_THROWS_WITH(compare_sets(a, tmp.path() / "none"), Contains("holds no manifest.json"));
+  CHECK_THROWS_WITH(compare_sets(a, same), Contains("SHA-256 mismatch"));
+  CHECK_THROWS_WITH(compare_sets(a, tmp.path() / "none"), Contains("manifest.json"));
 }
