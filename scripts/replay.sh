@@ -240,6 +240,8 @@ if [ "$simulator" = verilator ]; then
 else
   command -v iverilog >/dev/null ||
     { echo "replay.sh: iverilog is missing: apt-get install iverilog (scripts/deps.sh)" >&2; exit 1; }
+  # shellcheck source=scripts/synth_flow.sh
+  . "$root/scripts/synth_flow.sh"
   chparam=""
   for kv in "${dut_values[@]}"; do chparam+=" -set ${kv%%=*} ${kv#*=}"; done
   script="read_verilog -sv ${sources[*]}
@@ -252,8 +254,6 @@ hierarchy -check -top $top"
       "netlist" >&2; exit 2; }
     # SCW_NETLIST_SYNTH_OPTS: more synth_xilinx options, e.g. -nobram to check the rest of the
     # mapping of a block with block RAM (docs/vectors.md).
-    # shellcheck source=scripts/synth_flow.sh
-    . "$root/scripts/synth_flow.sh"
     # shellcheck disable=SC2086 # the options are words
     script+=$'\n'"$(scw_synth_flow "$top" ${SCW_NETLIST_SYNTH_OPTS:-})"
     cells=("$(dirname "$(command -v yosys)")/../share/yosys/xilinx/cells_sim.v")
@@ -261,7 +261,7 @@ hierarchy -check -top $top"
   else script+=$'\nproc; opt_clean'; fi
   write_dut() {
     printf '%s\nwrite_verilog -noattr %s\n' "$script" "$work/dut.v" >"$work/dut.ys"
-    yosys -q -l "$work/yosys.log" -s "$work/dut.ys" >/dev/null 2>&1 ||
+    scw_yosys_run yosys -q -l "$work/yosys.log" -s "$work/dut.ys" >/dev/null 2>&1 ||
       { tail -20 "$work/yosys.log"; exit 1; }
   }
   # The block as Yosys writes it depends on the block's parameters only, not the testbench's:

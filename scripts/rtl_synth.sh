@@ -154,7 +154,7 @@ done
 label="$module${params[*]+ ${params[*]}}"
 t0="$(date +%s%N)"
 status=0
-(cd "$work" && "$yosys" -q -l "$log" -s synth.ys > console.txt 2>&1) || status=$?
+(cd "$work" && scw_yosys_run "$yosys" -q -l "$log" -s synth.ys > console.txt 2>&1) || status=$?
 t1="$(date +%s%N)"
 secs="$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", (b - a) / 1e9 }')"
 
