@@ -20,7 +20,8 @@
 # SCW_REPLAY_CACHE=DIR (optional): a folder replays share, so that what one builds the next
 # does not build again: Verilator's own runtime objects (verilated.o and friends, the same for
 # every testbench built with the same Verilator and options: about 7 of a replay's 10 s of
-# compile), each Verilated testbench, and each block as Yosys writes it for Icarus. An entry is
+# compile), each Verilated testbench (one for every set of a block at one size: the set's counts
+# are plusargs), and each block as Yosys writes it for Icarus. An entry is
 # keyed by the tool's version, its options and parameters and the content of every file it
 # reads, so an edited source or another parameter builds anew. The test suite sets it.
 set -euo pipefail
@@ -73,24 +74,28 @@ file_field() {
 }
 
 # Per stage: tb (under tests/), top, rtl (under rtl_models/, after the package), the block's
-# parameters and the testbench's own (Name=manifest_key), and the plusargs (arg=manifest_key).
+# parameters and the testbench's own (Name=manifest_key), the plusargs (arg=manifest_key) and
+# the set's counts (arg=manifest_key or number): its beats, words and frames, given at run time
+# so that every set of a block at one size replays one build of its testbench.
 stage="$(grep -o '"stage": *"[a-z_]*"' "$manifest" | head -1 | sed 's/.*: *"//; s/"$//')"
 tb_params=()
 tb_extra=()
 plusargs=()
+counts=()
 flatten=1
 case "$stage" in
   line_buffer)
     tb=common/tb/tb_line_buffer_replay.sv top=scw_line_buffer
     rtl=(common/scw_ram_sdp.sv common/scw_line_buffer.sv)
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px Rows=rows)
-    tb_params=("Beats=$(file_field input.hex beats)") ;;
+    counts=("beats=$(file_field input.hex beats)") ;;
   rectify)
     tb=rectify/tb/tb_rectify_replay.sv top=scw_rectify
     rtl=(common/scw_ram_sdp.sv rectify/scw_rectify.sv)
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height Rows=rows
                 FracBits=frac_bits)
-    tb_params=(CoordBits=coord_bits "Beats=$(file_field input.hex beats)")
+    tb_params=(CoordBits=coord_bits)
+    counts=("beats=$(file_field input.hex beats)")
     plusargs=(width=width height=height lead=lead_rows) ;;
   disparity)
     tb=disparity/tb/tb_disparity_replay.sv top=scw_disparity
@@ -98,30 +103,31 @@ case "$stage" in
          "$(cd "$root/rtl_models" && echo disparity/*.sv)")
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height Window=window
                 NumDisp=num_disp)
-    tb_params=("Beats=$(file_field left.hex beats)" "CfgW=$(file_field cfg.hex width_bits)")
+    tb_params=("CfgW=$(file_field cfg.hex width_bits)")
+    counts=("beats=$(file_field left.hex beats)")
     plusargs=(width=width height=height) ;;
   labelling)
     tb=labelling/tb/tb_labelling_replay.sv top=scw_labelling
     rtl=(common/scw_ram_sdp.sv common/scw_fifo.sv "$(cd "$root/rtl_models" && echo labelling/*.sv)")
     dut_params=(MaxWidthPx=max_width_px MaxHeight=max_height MaxTilesX=max_tiles_x
                 MaxTilesY=max_tiles_y LabelsPerTile=labels_per_tile MaxObjects=max_objects)
-    tb_params=(BeatsIn=beats_in WordsOut=words_out Frames=frames
-               "OutW=$(($(file_field expected.hex width_bits) - 1))"
+    tb_params=("OutW=$(($(file_field expected.hex width_bits) - 1))"
                "CfgW=$(file_field cfg.hex width_bits)")
+    counts=(beats_in=beats_in words_out=words_out frames=frames)
     plusargs=(width=width height=height) ;;
   road)
     tb=road/tb/tb_road_replay.sv top=scw_road
     rtl=("$(cd "$root/rtl_models" && echo common/*.sv road/*.sv)")
     dut_params=(Ppc=ppc MaxWidthPx=max_width_px MaxHeight=max_height)
-    tb_params=(Beats=beats Frames=frames FitClocks=fit_clocks
-               "CfgW=$(file_field cfg.hex width_bits)")
+    tb_params=(FitClocks=fit_clocks "CfgW=$(file_field cfg.hex width_bits)")
+    counts=(beats=beats frames=frames)
     plusargs=(width=width height=height) ;;
   warning)
     tb=warning/tb/tb_warning_replay.sv top=scw_warning
     rtl=(common/scw_delay_ring.sv "$(cd "$root/rtl_models" && echo warning/*.sv)")
     dut_params=(MaxDisparityPx=max_disparity_px)
-    tb_params=(WordsIn=words_in WordsOut=words_out
-               "InW=$(($(file_field in.hex width_bits) - 1))"
+    counts=(words_in=words_in words_out=words_out)
+    tb_params=("InW=$(($(file_field in.hex width_bits) - 1))"
                "OutW=$(($(file_field expected.hex width_bits) - 1))"
                "CfgW=$(file_field cfg.hex width_bits)") ;;
   pipeline)
@@ -135,17 +141,18 @@ case "$stage" in
                 GridLog2=GridLog2 Window=Window NumDisp=NumDisp MaxTilesX=MaxTilesX
                 MaxTilesY=MaxTilesY LabelsPerTile=LabelsPerTile MaxObjects=MaxObjects
                 MaxDisparityPx=MaxDisparityPx)
-    tb_params=(Width=width Height=height CfgWords=cfg_words
+    tb_params=(CfgWords=cfg_words
                "WarningCfgW=$(file_field cfg_warning.hex width_bits)"
                "RoadCfgW=$(file_field cfg_road.hex width_bits)"
                "DisparityCfgW=$(file_field cfg_disparity.hex width_bits)"
                "LabellingCfgW=$(file_field cfg_labelling.hex width_bits)"
-               "KnotBits=$(file_field knots.hex width_bits)" "Knots=$(file_field knots.hex beats)"
-               "RawBeats=$(file_field left.hex beats)" "DispBeats=$(file_field disparity.hex beats)"
+               "KnotBits=$(file_field knots.hex width_bits)"
                "ObjBits=$(file_field objects.hex width_bits)"
-               "ObjWords=$(file_field objects.hex beats)"
-               "ResBits=$(file_field results.hex width_bits)"
-               "Results=$(file_field results.hex beats)") ;;
+               "ResBits=$(file_field results.hex width_bits)")
+    counts=("knots=$(file_field knots.hex beats)" "raw_beats=$(file_field left.hex beats)"
+            "disp_beats=$(file_field disparity.hex beats)"
+            "obj_words=$(file_field objects.hex beats)" "results=$(file_field results.hex beats)")
+    plusargs=(width=width height=height) ;;
   *)
     echo "replay.sh: $manifest has stage '${stage}'; replayable stages: line_buffer rectify" \
       "disparity labelling road warning pipeline" >&2
@@ -172,6 +179,16 @@ for kv in "${tb_params[@]}"; do
 done
 args=(+vectors="$set_dir")
 for kv in "${plusargs[@]}"; do args+=("+${kv%%=*}=$(field "${kv#*=}")"); done
+# The counts: plusargs, and Cap, the testbench's array size, a power of two from 16384 up, so that
+# the sets of a block at one size (up to 16384 beats or words each) share one build.
+cap=16384
+for kv in "${counts[@]}"; do
+  v="${kv#*=}"
+  [[ "$v" =~ ^[0-9]+$ ]] || v="$(field "$v")"
+  args+=("+${kv%%=*}=$v")
+  while [ "$cap" -lt "$v" ]; do cap=$((cap * 2)); done
+done
+tb_values+=("Cap=$cap")
 args+=("${extra[@]}")
 
 mkdir -p "$work"

@@ -4,23 +4,26 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run: +vectors=<set folder>; parameters from the set's manifest.json (config and meta).
+// Run: +vectors=<set folder> +beats=<N> (input.hex's beats); parameters from the set's
+// manifest.json (config), and Cap, the most beats a set may have.
 module tb_line_buffer_replay #(
   parameter int Ppc        = 2,
   parameter int MaxWidthPx = 1280,
   parameter int Rows       = 3,
-  parameter int Beats      = 512
+  parameter int Cap        = 16384
 );
   localparam int BeatW = Ppc * 8;
   localparam int OutW  = Rows * BeatW;
 
-  logic [BeatW+1:0] in_mem  [Beats];
-  logic [OutW+1:0]  exp_mem [Beats];
+  logic [BeatW+1:0] in_mem  [Cap];
+  logic [OutW+1:0]  exp_mem [Cap];
   string dir;
+  int beats;
   initial begin
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
-    $readmemh({dir, "/input.hex"}, in_mem, 0, Beats - 1);
-    $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
+    beats = tb_replay_count("beats", Cap);
+    $readmemh({dir, "/input.hex"}, in_mem, 0, beats - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, beats - 1);
   end
 
   logic clk, rst_n;
@@ -30,8 +33,9 @@ module tb_line_buffer_replay #(
   // Source: offers on 3 of 4 cycles; holds a beat until it is accepted.
   int i;
   logic in_valid, in_ready;
-  tb_replay_source #(.Count(Beats), .Period(4), .Idle(3)) u_in (
-    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(in_ready), .valid_o(in_valid),
+  tb_replay_source #(.Period(4), .Idle(3)) u_in (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(in_ready), .count_i(beats),
+    .valid_o(in_valid),
     .count_o(i)
   );
 
@@ -43,8 +47,8 @@ module tb_line_buffer_replay #(
 
   scw_line_buffer #(.Ppc(Ppc), .MaxWidthPx(MaxWidthPx), .Rows(Rows)) u_dut (
     .clk_i(clk), .rst_ni(rst_n),
-    .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_mem[i < Beats ? i : 0][BeatW-1:0]),
-    .in_sof_i(in_mem[i < Beats ? i : 0][BeatW]), .in_eol_i(in_mem[i < Beats ? i : 0][BeatW+1]),
+    .in_valid_i(in_valid), .in_ready_o(in_ready), .in_data_i(in_mem[i < beats ? i : 0][BeatW-1:0]),
+    .in_sof_i(in_mem[i < beats ? i : 0][BeatW]), .in_eol_i(in_mem[i < beats ? i : 0][BeatW+1]),
     .out_valid_o(out_valid), .out_ready_i(out_ready), .out_data_o(out_data),
     .out_sof_o(out_sof), .out_eol_o(out_eol), .err_o(err)
   );
@@ -52,15 +56,15 @@ module tb_line_buffer_replay #(
   // A bound in clocks, not a delay: Verilator 5.006 keeps a delay in 32 bits of the time
   // precision (ps), so a large set's delay wrapped and fired early.
   always @(posedge clk)
-    if (cyc > Beats * 20 + 125) $fatal(1, "timeout after %0d of %0d beats", o, Beats);
+    if (cyc > beats * 20 + 125) $fatal(1, "timeout after %0d of %0d beats", o, beats);
   always @(posedge clk) begin
     if (out_valid && out_ready) begin
       if ({out_eol, out_sof, out_data} !== exp_mem[o])
         $fatal(1, "beat %0d: got %h, expected %h", o, {out_eol, out_sof, out_data}, exp_mem[o]);
       if (err) $fatal(1, "err_o set on a well-formed stream");
       o <= o + 1;
-      if (o + 1 == Beats) begin
-        $display("PASS: %0d beats match %s", Beats, dir);
+      if (o + 1 == beats) begin
+        $display("PASS: %0d beats match %s", beats, dir);
         $finish;
       end
     end

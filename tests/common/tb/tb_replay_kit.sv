@@ -1,10 +1,32 @@
 // SPDX-License-Identifier: Apache-2.0
 // What every replay testbench shares, so that each holds only its block's ports and checks:
 // the clock, the reset and the cycle count (tb_replay_clock), a source that offers beats on a
-// fixed pattern of cycles and holds a beat until it is taken (tb_replay_source), and a sink's
-// ready on another pattern (tb_replay_sink).
+// fixed pattern of cycles and holds a beat until it is taken (tb_replay_source), a sink's ready
+// on another pattern (tb_replay_sink), a set's counts given at run time (tb_replay_count) and
+// the refusal of a set made at other word widths (tb_replay_widths).
 `timescale 1ns / 1ps
 `default_nettype none
+
+// A count of the set's lines (beats, words, frames), given at run time as +NAME=N (replay.sh
+// reads it from the manifest), so that one build of a testbench replays every set of its block
+// at one size. The arrays it indexes are built with Cap lines, a parameter.
+function automatic int tb_replay_count(input string name, input int cap);
+  int n;
+  if (!$value$plusargs({name, "=%d"}, n)) $fatal(1, "give +%s=N, the set's count (its manifest)", name);
+  if (n < 1 || n > cap)
+    $fatal(1, "+%s=%0d: this build of the testbench holds 1 to %0d: build it with -GCap=%0d or more",
+           name, n, cap, n);
+  return n;
+endfunction
+
+// A set made at other scw_pkg widths (a field's width changed since) holds words this RTL cannot
+// match: say so before the first clock, rather than fail on the first word that differs.
+function automatic void tb_replay_widths(input string words, input string block, input int set_bits,
+                                         input int rtl_bits);
+  if (set_bits != rtl_bits)
+    $fatal(1, "the set's %s words are %0d bits, this %s's %0d: the set was made at other scw_pkg widths; regenerate it (scripts/regen_vectors.sh) or replay it on the RTL it was made for",
+           words, set_bits, block, rtl_bits);
+endfunction
 
 // 125 MHz. The reset is released between two clock edges (20 and 24 ns): on an edge, simulators
 // order it differently (Icarus once stored an X; Verilator and Icarus then start a cycle apart).
@@ -27,11 +49,10 @@ module tb_replay_clock (
 endmodule
 
 // Offers a beat while run_i is high on every cycle but cycle Idle of each Period (all of them
-// when gaps_i is low), until Count beats are taken; a beat once offered stays offered until it is
-// taken (AXI4-Stream). count_o is the index of the beat on offer (Count when all are taken).
+// when gaps_i is low), until count_i beats are taken; a beat once offered stays offered until it is
+// taken (AXI4-Stream). count_o is the index of the beat on offer (count_i when all are taken).
 // Sources of one testbench use co-prime periods (4 and 5) so that their gaps drift apart.
 module tb_replay_source #(
-  parameter int Count  = 1,
   parameter int Period = 4,
   parameter int Idle   = 3
 ) (
@@ -40,6 +61,7 @@ module tb_replay_source #(
   input  longint cyc_i,
   input  logic   gaps_i,
   input  logic   ready_i,
+  input  int     count_i,  // the set's beats
   output logic   valid_o,
   output int     count_o
 );
@@ -48,7 +70,7 @@ module tb_replay_source #(
     held = 1'b0;
     count_o = 0;
   end
-  assign valid_o = run_i && (count_o < Count) && (((cyc_i % Period) != Idle) || held || !gaps_i);
+  assign valid_o = run_i && (count_o < count_i) && (((cyc_i % Period) != Idle) || held || !gaps_i);
   always @(posedge clk) begin
     held <= valid_o && !ready_i;
     if (valid_o && ready_i) count_o <= count_o + 1;

@@ -4,11 +4,11 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run with +vectors=<set folder> +width +height (the manifest's config): the rest of the stage's
-// configuration is the set's cfg.hex, one word for cfg_labelling_i (scw_pkg::labelling_cfg_t;
-// its fields in the manifest's layout). Parameters: config.max_width_px, max_height,
-// max_tiles_x, max_tiles_y, labels_per_tile, max_objects (the build), beats_in, words_out and
-// frames, the words' widths.
+// Run with +vectors=<set folder> +width +height +beats_in +words_out +frames (the manifest's
+// config): the rest of the stage's configuration is the set's cfg.hex, one word for
+// cfg_labelling_i (scw_pkg::labelling_cfg_t; its fields in the manifest's layout). Parameters:
+// config.max_width_px, max_height, max_tiles_x, max_tiles_y, labels_per_tile, max_objects (the
+// build), the words' widths, and Cap, the most beats or words a set may have.
 // +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
 // another).
 module tb_labelling_replay #(
@@ -18,35 +18,35 @@ module tb_labelling_replay #(
   parameter int MaxTilesY     = 4,
   parameter int LabelsPerTile = 64,
   parameter int MaxObjects    = 64,
-  parameter int BeatsIn       = 3072,
-  parameter int WordsOut      = 12,
-  parameter int Frames        = 1,
+  parameter int Cap           = 16384,
   // The object word's width: the manifest's expected.hex width_bits less the last bit (897 at
   // scw_pkg's widths).
   parameter int OutW          = 897,
   parameter int CfgW          = 80   // cfg.hex's width_bits: scw_pkg::LabellingCfgBits
 );
   localparam int Nodes = MaxTilesX * MaxTilesY * LabelsPerTile;
-  // Generous: the stage takes about one beat a clock, then sweeps its used nodes twice a frame;
-  // the source idles 1 clock in 4 and the sink 3 in 7.
-  localparam longint MaxCycles = 8 * (BeatsIn + WordsOut) + 16 * Nodes * (Frames + 1)
-                                          + 10000;
-
-  logic [17:0]   in_mem  [BeatsIn];   // {eol, sof, d[15:0]}
-  logic [OutW:0] exp_mem [WordsOut];  // {last, data[OutW-1:0]}
+  logic [17:0]   in_mem  [Cap];  // {eol, sof, d[15:0]}
+  logic [OutW:0] exp_mem [Cap];  // {last, data[OutW-1:0]}
   string dir;
-  int width, height, stalls = 1;
+  int width, height, stalls = 1, beats_in, words_out, frames;
+  longint max_cycles;
   logic [CfgW-1:0] cfg_mem [1];
   initial begin
     if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    beats_in = tb_replay_count("beats_in", Cap);
+    words_out = tb_replay_count("words_out", Cap);
+    frames = tb_replay_count("frames", Cap);
+    // Generous: the stage takes about one beat a clock, then sweeps its used nodes twice a
+    // frame; the source idles 1 clock in 4 and the sink 3 in 7.
+    max_cycles = 8 * (beats_in + words_out) + 16 * Nodes * (frames + 1) + 10000;
     if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height))
       $fatal(1, "give the set's config: +width +height");
     $readmemh({dir, "/cfg.hex"}, cfg_mem, 0, 0);
-    if (width * height * Frames != BeatsIn)
-      $fatal(1, "%0d frames of %0d x %0d are not %0d beats", Frames, width, height, BeatsIn);
-    $readmemh({dir, "/in.hex"}, in_mem, 0, BeatsIn - 1);
-    $readmemh({dir, "/expected.hex"}, exp_mem, 0, WordsOut - 1);
+    if (width * height * frames != beats_in)
+      $fatal(1, "%0d frames of %0d x %0d are not %0d beats", frames, width, height, beats_in);
+    $readmemh({dir, "/in.hex"}, in_mem, 0, beats_in - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, words_out - 1);
   end
 
   logic clk, rst_n;
@@ -57,11 +57,12 @@ module tb_labelling_replay #(
   int i;
   logic in_valid, in_ready;
   logic [17:0] in_beat;
-  tb_replay_source #(.Count(BeatsIn), .Period(4), .Idle(3)) u_in (
-    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .valid_o(in_valid),
+  tb_replay_source #(.Period(4), .Idle(3)) u_in (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .count_i(beats_in),
+    .valid_o(in_valid),
     .count_o(i)
   );
-  assign in_beat  = in_mem[(i < BeatsIn) ? i : 0];
+  assign in_beat  = in_mem[(i < beats_in) ? i : 0];
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each word taken must be the next expected one.
   int o = 0, statuses = 0;
@@ -81,13 +82,7 @@ module tb_labelling_replay #(
     .out_last_o(out_last), .err_o(err)
   );
 
-  // A set made at other scw_pkg widths (a width changed since) holds words this RTL cannot
-  // match: say so, rather than fail on the first word that differs.
-  initial begin
-    if ($bits(u_dut.out_data_o) != OutW)
-      $fatal(1, "the set's object words are %0d bits, this scw_labelling's %0d: the set was made at other scw_pkg widths; regenerate it (scripts/regen_vectors.sh) or replay it on the RTL it was made for",
-             OutW, $bits(u_dut.out_data_o));
-  end
+  initial tb_replay_widths("object", "scw_labelling", OutW, $bits(u_dut.out_data_o));
 
   // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
   logic stalled = 1'b0;
@@ -100,8 +95,8 @@ module tb_labelling_replay #(
   end
 
   always @(posedge clk) begin
-    if (cyc > MaxCycles)
-      $fatal(1, "timeout after %0d of %0d words (%0d of %0d beats in)", o, WordsOut, i, BeatsIn);
+    if (cyc > max_cycles)
+      $fatal(1, "timeout after %0d of %0d words (%0d of %0d beats in)", o, words_out, i, beats_in);
     if (rst_n && err !== 1'b0) $fatal(1, "err_o on a well-formed stream (cycle %0d)", cyc);
     if (out_valid && out_ready) begin
       // Bit 0 of the data tells a status word (frame end, with last) from an object.
@@ -110,10 +105,10 @@ module tb_labelling_replay #(
                exp_mem[o][0] ? "status" : "object", {out_last, out_data}, exp_mem[o]);
       if (exp_mem[o][OutW]) statuses <= statuses + 1;
       o <= o + 1;
-      if (o + 1 == WordsOut) begin
-        if (i != BeatsIn)
-          $fatal(1, "all words out, but only %0d of %0d beats taken", i, BeatsIn);
-        $display("PASS: %0d words match %s (%0d frames, %0d cycles)", WordsOut, dir, Frames,
+      if (o + 1 == words_out) begin
+        if (i != beats_in)
+          $fatal(1, "all words out, but only %0d of %0d beats taken", i, beats_in);
+        $display("PASS: %0d words match %s (%0d frames, %0d cycles)", words_out, dir, frames,
                  cyc);
         $finish;
       end

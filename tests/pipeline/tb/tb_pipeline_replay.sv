@@ -9,8 +9,10 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run: +vectors=<set folder> [+stalls=0]. Parameters: the manifest's config.params (the top's,
-// by their RTL names), width, height, and each hex file's beats and width_bits.
+// Run: +vectors=<set folder> +width +height (the manifest's config) +knots +raw_beats
+// +disp_beats +obj_words +results (the beats of knots.hex, left.hex, disparity.hex, objects.hex
+// and results.hex) [+stalls=0]. Parameters: the manifest's config.params (the top's, by their
+// RTL names), each hex file's width_bits, and Cap, the most lines a file may have.
 module tb_pipeline_replay #(
   parameter int Ppc            = 1,
   parameter int MaxWidthPx     = 64,
@@ -24,21 +26,15 @@ module tb_pipeline_replay #(
   parameter int LabelsPerTile  = 64,
   parameter int MaxObjects     = 32,
   parameter int MaxDisparityPx = 32,
-  parameter int Width          = 64,  // the frames'
-  parameter int Height         = 32,
   parameter int CfgWords       = 3,   // cfg.hex: width, height, lead (32-bit words, port order)
   parameter int LabellingCfgW  = 80,  // cfg_labelling.hex: cfg_labelling_i (scw_pkg::LabellingCfgBits)
   parameter int DisparityCfgW  = 109,  // cfg_disparity.hex: cfg_disparity_i (scw_pkg::DisparityCfgBits)
   parameter int WarningCfgW    = 237,  // cfg_warning.hex: cfg_warning_i (scw_pkg::WarningCfgBits)
   parameter int RoadCfgW       = 173,  // cfg_road.hex: cfg_road_i (scw_pkg::RoadCfgBits)
   parameter int KnotBits       = 29,  // knots.hex: {right, address, knot}
-  parameter int Knots          = 1,
-  parameter int RawBeats       = 1,   // left.hex, right.hex: {eol, sof, px}
-  parameter int DispBeats      = 1,   // rect_*.hex (the same count), disparity.hex, road.hex
   parameter int ObjBits        = 898, // objects.hex: {last, word}
-  parameter int ObjWords       = 1,
   parameter int ResBits        = 202, // results.hex: {last, result}
-  parameter int Results        = 1
+  parameter int Cap            = 16384
 );
   localparam int MaxWH  = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight;
   localparam int KCols  = ((MaxWidthPx - 1) >> GridLog2) + 2;
@@ -52,59 +48,66 @@ module tb_pipeline_replay #(
   localparam int SlotW  = $clog2(RectRows);
   localparam int ObjW   = ObjBits - 1;
   localparam int OutW   = ResBits - 1;
-  // Generous: a frame takes a few thousand clocks at the small size, a few times more stalled.
-  localparam int MaxCycles = 64 * (RawBeats + ObjWords + Results) + 8 * Knots + 200000;
-
   logic [31:0]         cfg     [CfgWords];
   logic [WarningCfgW-1:0] cfg_warning [1];
   logic [RoadCfgW-1:0] cfg_road [1];
   logic [DisparityCfgW-1:0] cfg_disparity [1];
   logic [LabellingCfgW-1:0] cfg_labelling [1];
-  logic [KnotBits-1:0] knot    [Knots];
-  logic [BeatW+1:0]    l_mem   [RawBeats];
-  logic [BeatW+1:0]    r_mem   [RawBeats];
+  logic [KnotBits-1:0] knot    [Cap];
+  logic [BeatW+1:0]    l_mem   [Cap];  // left.hex, right.hex: {eol, sof, px}
+  logic [BeatW+1:0]    r_mem   [Cap];
   string dir;
-  int stalls = 1;
+  // disp_beats: rect_*.hex (the same count), disparity.hex, road.hex
+  int stalls = 1, knots, raw_beats, disp_beats, obj_words, results, max_cycles;
   initial begin
     if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    knots = tb_replay_count("knots", Cap);
+    raw_beats = tb_replay_count("raw_beats", Cap);
+    disp_beats = tb_replay_count("disp_beats", Cap);
+    obj_words = tb_replay_count("obj_words", Cap);
+    results = tb_replay_count("results", Cap);
+    // Generous: a frame takes a few thousand clocks at the small size, a few times more stalled.
+    max_cycles = 64 * (raw_beats + obj_words + results) + 8 * knots + 200000;
     $readmemh({dir, "/cfg.hex"}, cfg, 0, CfgWords - 1);
     $readmemh({dir, "/cfg_warning.hex"}, cfg_warning, 0, 0);
     $readmemh({dir, "/cfg_road.hex"}, cfg_road, 0, 0);
     $readmemh({dir, "/cfg_disparity.hex"}, cfg_disparity, 0, 0);
     $readmemh({dir, "/cfg_labelling.hex"}, cfg_labelling, 0, 0);
-    $readmemh({dir, "/knots.hex"}, knot, 0, Knots - 1);
-    $readmemh({dir, "/left.hex"}, l_mem, 0, RawBeats - 1);
-    $readmemh({dir, "/right.hex"}, r_mem, 0, RawBeats - 1);
+    $readmemh({dir, "/knots.hex"}, knot, 0, knots - 1);
+    $readmemh({dir, "/left.hex"}, l_mem, 0, raw_beats - 1);
+    $readmemh({dir, "/right.hex"}, r_mem, 0, raw_beats - 1);
   end
 
   logic clk, rst_n;
   longint cyc;
   tb_replay_clock u_clock (.clk, .rst_n, .cyc);
 
-  // Knots first, one a clock, run_i low; then run_i high for good.
+  // knots first, one a clock, run_i low; then run_i high for good.
   int k = 0;
   logic run, knot_we;
-  assign knot_we = rst_n && (k < Knots);
-  assign run     = rst_n && (k >= Knots);
+  assign knot_we = rst_n && (k < knots);
+  assign run     = rst_n && (k >= knots);
   always @(posedge clk) if (knot_we) k <= k + 1;
   logic [KnotBits-1:0] knot_w;
-  assign knot_w = knot[(k < Knots) ? k : 0];
+  assign knot_w = knot[(k < knots) ? k : 0];
 
   // Sources: left offers on 3 of 4 cycles, right on 4 of 5; a beat is held until taken.
   int i, j;
   logic l_valid, l_ready, r_valid, r_ready;
   logic [BeatW+1:0] l_beat, r_beat;
-  tb_replay_source #(.Count(RawBeats), .Period(4), .Idle(3)) u_l (
-    .clk, .run_i(run), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(l_ready), .valid_o(l_valid),
+  tb_replay_source #(.Period(4), .Idle(3)) u_l (
+    .clk, .run_i(run), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(l_ready), .count_i(raw_beats),
+    .valid_o(l_valid),
     .count_o(i)
   );
-  tb_replay_source #(.Count(RawBeats), .Period(5), .Idle(2)) u_r (
-    .clk, .run_i(run), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(r_ready), .valid_o(r_valid),
+  tb_replay_source #(.Period(5), .Idle(2)) u_r (
+    .clk, .run_i(run), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(r_ready), .count_i(raw_beats),
+    .valid_o(r_valid),
     .count_o(j)
   );
-  assign l_beat  = l_mem[(i < RawBeats) ? i : 0];
-  assign r_beat  = r_mem[(j < RawBeats) ? j : 0];
+  assign l_beat  = l_mem[(i < raw_beats) ? i : 0];
+  assign r_beat  = r_mem[(j < raw_beats) ? j : 0];
 
   logic out_valid, out_ready, out_last, obj_valid, obj_ready, obj_last;
   logic [OutW-1:0] out_data;
@@ -142,56 +145,54 @@ module tb_pipeline_replay #(
 
   // Each stream where it leaves its stage: the stage's output ports, by hierarchical name.
   logic [31:0] n_rl, n_rr, n_disp, n_road, n_obj, n_table, n_res;
-  tb_pipeline_stream_check #(.Name("rect_left"), .Bits(BeatW + 2), .Lines(DispBeats), .Pixel(1),
-    .Ppc(Ppc), .Width(Width), .Height(Height)) u_rect_left (.clk(clk),
+  tb_pipeline_stream_check #(.Name("rect_left"), .Count("disp_beats"), .Cap(Cap),
+    .Bits(BeatW + 2), .Pixel(1), .Ppc(Ppc)) u_rect_left (.clk(clk),
     .take(u_dut.u_cam_l.u_rectify.out_valid_o && u_dut.u_cam_l.u_rectify.out_ready_i),
     .line({u_dut.u_cam_l.u_rectify.out_eol_o, u_dut.u_cam_l.u_rectify.out_sof_o,
            u_dut.u_cam_l.u_rectify.out_data_o}), .seen(n_rl));
-  tb_pipeline_stream_check #(.Name("rect_right"), .Bits(BeatW + 2), .Lines(DispBeats),
-    .Pixel(1), .Ppc(Ppc), .Width(Width), .Height(Height)) u_rect_right (.clk(clk),
+  tb_pipeline_stream_check #(.Name("rect_right"), .Count("disp_beats"), .Cap(Cap),
+    .Bits(BeatW + 2), .Pixel(1), .Ppc(Ppc)) u_rect_right (.clk(clk),
     .take(u_dut.u_cam_r.u_rectify.out_valid_o && u_dut.u_cam_r.u_rectify.out_ready_i),
     .line({u_dut.u_cam_r.u_rectify.out_eol_o, u_dut.u_cam_r.u_rectify.out_sof_o,
            u_dut.u_cam_r.u_rectify.out_data_o}), .seen(n_rr));
-  tb_pipeline_stream_check #(.Name("disparity"), .Bits(DispW + 2), .Lines(DispBeats),
-    .Pixel(1), .Ppc(Ppc), .Width(Width), .Height(Height)) u_disparity (.clk(clk),
+  tb_pipeline_stream_check #(.Name("disparity"), .Count("disp_beats"), .Cap(Cap),
+    .Bits(DispW + 2), .Pixel(1), .Ppc(Ppc)) u_disparity (.clk(clk),
     .take(u_dut.u_disparity.out_valid_o && u_dut.u_disparity.out_ready_i),
     .line({u_dut.u_disparity.out_eol_o, u_dut.u_disparity.out_sof_o,
            u_dut.u_disparity.out_data_o}), .seen(n_disp));
-  tb_pipeline_stream_check #(.Name("road"), .Bits(DispW + 2), .Lines(DispBeats), .Pixel(1),
-    .Ppc(Ppc), .Width(Width), .Height(Height)) u_road (.clk(clk),
+  tb_pipeline_stream_check #(.Name("road"), .Count("disp_beats"), .Cap(Cap),
+    .Bits(DispW + 2), .Pixel(1), .Ppc(Ppc)) u_road (.clk(clk),
     .take(u_dut.u_road.out_valid_o && u_dut.u_road.out_ready_i),
     .line({u_dut.u_road.out_eol_o, u_dut.u_road.out_sof_o, u_dut.u_road.out_data_o}),
     .seen(n_road));
-  // A set made at other scw_pkg widths (a width changed since) holds words this RTL cannot
-  // match: say so, rather than fail on the first word that differs.
+  // ObjBits and ResBits count the last bit too.
   initial begin
-    if ($bits(u_dut.u_labelling.out_data_o) + 1 != ObjBits || $bits(u_dut.out_data_o) + 1 != ResBits)
-      $fatal(1, "the set's object and result words are %0d and %0d bits with last, this scw_pipeline's %0d and %0d: the set was made at other scw_pkg widths; regenerate it (scripts/regen_vectors.sh) or replay it on the RTL it was made for",
-             ObjBits, ResBits, $bits(u_dut.u_labelling.out_data_o) + 1, $bits(u_dut.out_data_o) + 1);
+    tb_replay_widths("object", "scw_pipeline", ObjBits - 1, $bits(u_dut.u_labelling.out_data_o));
+    tb_replay_widths("result", "scw_pipeline", ResBits - 1, $bits(u_dut.out_data_o));
   end
-  tb_pipeline_stream_check #(.Name("objects"), .Bits(ObjBits), .Lines(ObjWords), .Pixel(0))
-    u_objects (.clk(clk),
+  tb_pipeline_stream_check #(.Name("objects"), .Count("obj_words"), .Cap(Cap), .Bits(ObjBits),
+    .Pixel(0)) u_objects (.clk(clk),
     .take(u_dut.u_labelling.out_valid_o && u_dut.u_labelling.out_ready_i),
     .line({u_dut.u_labelling.out_last_o, u_dut.u_labelling.out_data_o}), .seen(n_obj));
-  tb_pipeline_stream_check #(.Name("objects"), .Bits(ObjBits), .Lines(ObjWords), .Pixel(0))
-    u_table (.clk(clk), .take(obj_valid && obj_ready), .line({obj_last, obj_data}),
+  tb_pipeline_stream_check #(.Name("objects"), .Count("obj_words"), .Cap(Cap), .Bits(ObjBits),
+    .Pixel(0)) u_table (.clk(clk), .take(obj_valid && obj_ready), .line({obj_last, obj_data}),
     .seen(n_table));
-  tb_pipeline_stream_check #(.Name("results"), .Bits(ResBits), .Lines(Results), .Pixel(0))
-    u_results (.clk(clk), .take(out_valid && out_ready), .line({out_last, out_data}),
+  tb_pipeline_stream_check #(.Name("results"), .Count("results"), .Cap(Cap), .Bits(ResBits),
+    .Pixel(0)) u_results (.clk(clk), .take(out_valid && out_ready), .line({out_last, out_data}),
     .seen(n_res));
 
   always @(posedge clk) begin
-    if (cyc > MaxCycles)
+    if (cyc > max_cycles)
       $fatal(1, "timeout at cycle %0d: %0d of %0d results, %0d of %0d object words, %0d of %0d disparity beats (%0d, %0d raw beats in)",
-             cyc, n_res, Results, n_obj, ObjWords, n_disp, DispBeats, i, j);
+             cyc, n_res, results, n_obj, obj_words, n_disp, disp_beats, i, j);
     if (rst_n && err !== 8'd0) $fatal(1, "err_o = %b on well-formed frames (cycle %0d)", err, cyc);
-    if (n_res == Results && n_table == ObjWords) begin
-      if (n_rl != DispBeats || n_rr != DispBeats || n_disp != DispBeats || n_road != DispBeats ||
-          n_obj != ObjWords)
+    if (n_res == results && n_table == obj_words) begin
+      if (n_rl != disp_beats || n_rr != disp_beats || n_disp != disp_beats || n_road != disp_beats ||
+          n_obj != obj_words)
         $fatal(1, "results out, but streams short: rect %0d/%0d, disparity %0d, road %0d of %0d, objects %0d of %0d",
-               n_rl, n_rr, n_disp, n_road, DispBeats, n_obj, ObjWords);
+               n_rl, n_rr, n_disp, n_road, disp_beats, n_obj, obj_words);
       $display("PASS: %0d beats match %s (%0d results, %0d object words, %0d disparity beats a stream, %0d cycles)",
-               Results, dir, Results, ObjWords, DispBeats, cyc);
+               results, dir, results, obj_words, disp_beats, cyc);
       $finish;
     end
   end

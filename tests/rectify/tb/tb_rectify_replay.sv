@@ -4,10 +4,11 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run: +vectors=<set folder> +width=<W> +height=<H> +lead=<D>, from the set's manifest.json
-// (config.width, config.height, config.lead_rows). Parameters: config.ppc, max_width_px,
-// max_height, rows, frac_bits, coord_bits, and the hex files' meta.beats (all three files of a
-// set have frames x W * H / Ppc beats: frames back to back, each with the one map).
+// Run: +vectors=<set folder> +width=<W> +height=<H> +lead=<D> +beats=<N>, from the set's
+// manifest.json (config.width, config.height, config.lead_rows, and the hex files' beats: all
+// three files of a set have frames x W * H / Ppc beats, frames back to back, each with the one
+// map). Parameters: config.ppc, max_width_px, max_height, rows, frac_bits, coord_bits, and Cap,
+// the most beats a set may have.
 module tb_rectify_replay #(
   parameter int Ppc        = 2,
   parameter int MaxWidthPx = 128,
@@ -15,7 +16,7 @@ module tb_rectify_replay #(
   parameter int Rows       = 32,
   parameter int FracBits   = 5,
   parameter int CoordBits  = 14,
-  parameter int Beats      = 1024
+  parameter int Cap        = 16384
 );
   localparam int MaxWH   = (MaxWidthPx > MaxHeight) ? MaxWidthPx : MaxHeight;
   // What scw_rectify derives from its parameters; the manifest's coord_bits must agree.
@@ -26,25 +27,26 @@ module tb_rectify_replay #(
   localparam int HW    = $clog2(MaxHeight + 1);
   localparam int SlotW = $clog2(Rows);
 
-  logic [BeatW+1:0] in_mem  [Beats];  // {eol, sof, px[Ppc-1..0]}
-  logic [MapW+1:0]  map_mem [Beats];  // {eol, sof, {y, x}[Ppc-1..0]}
-  logic [BeatW+1:0] exp_mem [Beats];
+  logic [BeatW+1:0] in_mem  [Cap];  // {eol, sof, px[Ppc-1..0]}
+  logic [MapW+1:0]  map_mem [Cap];  // {eol, sof, {y, x}[Ppc-1..0]}
+  logic [BeatW+1:0] exp_mem [Cap];
   string dir;
-  int width, height, lead;
+  int width, height, lead, beats;
   initial begin
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    beats = tb_replay_count("beats", Cap);
     if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height) ||
         !$value$plusargs("lead=%d", lead))
       $fatal(1, "give +width= +height= +lead= (config.width, height, lead_rows)");
     if (CoordBits != DutCoordBits)
       $fatal(1, "coord_bits %0d in the manifest, but scw_rectify derives %0d", CoordBits,
              DutCoordBits);
-    if (Beats % (width * height / Ppc) != 0)
-      $fatal(1, "%0d beats are not whole %0d x %0d frames at %0d px per beat", Beats, width,
+    if (beats % (width * height / Ppc) != 0)
+      $fatal(1, "%0d beats are not whole %0d x %0d frames at %0d px per beat", beats, width,
              height, Ppc);
-    $readmemh({dir, "/input.hex"}, in_mem, 0, Beats - 1);
-    $readmemh({dir, "/map.hex"}, map_mem, 0, Beats - 1);
-    $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
+    $readmemh({dir, "/input.hex"}, in_mem, 0, beats - 1);
+    $readmemh({dir, "/map.hex"}, map_mem, 0, beats - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, beats - 1);
   end
 
   logic clk, rst_n;
@@ -55,21 +57,23 @@ module tb_rectify_replay #(
   int i;
   logic in_valid, in_ready;
   logic [BeatW+1:0] in_beat;
-  tb_replay_source #(.Count(Beats), .Period(4), .Idle(3)) u_in (
-    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(in_ready), .valid_o(in_valid),
+  tb_replay_source #(.Period(4), .Idle(3)) u_in (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(in_ready), .count_i(beats),
+    .valid_o(in_valid),
     .count_o(i)
   );
-  assign in_beat  = in_mem[(i < Beats) ? i : 0];
+  assign in_beat  = in_mem[(i < beats) ? i : 0];
 
   // Map source: offers on 4 of 5 cycles, out of step with the raw source.
   int j;
   logic map_valid, map_ready;
   logic [MapW+1:0] map_beat;
-  tb_replay_source #(.Count(Beats), .Period(5), .Idle(2)) u_map (
-    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(map_ready), .valid_o(map_valid),
+  tb_replay_source #(.Period(5), .Idle(2)) u_map (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(map_ready), .count_i(beats),
+    .valid_o(map_valid),
     .count_o(j)
   );
-  assign map_beat  = map_mem[(j < Beats) ? j : 0];
+  assign map_beat  = map_mem[(j < beats) ? j : 0];
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each output must be the next expected line.
   int o = 0;
@@ -94,7 +98,7 @@ module tb_rectify_replay #(
   // A bound in clocks, not a delay: Verilator 5.006 keeps a delay in 32 bits of the time
   // precision (ps), so a thesis-size set's delay wrapped and fired early.
   always @(posedge clk)
-    if (cyc > Beats * 40 + 12500) $fatal(1, "timeout after %0d of %0d beats (raw %0d, map %0d in)", o, Beats, i, j);
+    if (cyc > beats * 40 + 12500) $fatal(1, "timeout after %0d of %0d beats (raw %0d, map %0d in)", o, beats, i, j);
   always @(posedge clk) begin
     if (err != '0) $fatal(1, "err_o = %b on a well-formed frame (cycle %0d)", err, cyc);
     if (out_valid && out_ready) begin
@@ -103,11 +107,11 @@ module tb_rectify_replay #(
                o / (width * height / Ppc), o % (width * height / Ppc) / (width / Ppc),
                {out_eol, out_sof, out_data}, exp_mem[o]);
       o <= o + 1;
-      if (o + 1 == Beats) begin
+      if (o + 1 == beats) begin
         // The last output row needs the last raw row, and every output beat one map beat.
-        if (i != Beats || j != Beats)
-          $fatal(1, "frame out, but only %0d raw and %0d map beats taken of %0d", i, j, Beats);
-        $display("PASS: %0d beats match %s", Beats, dir);
+        if (i != beats || j != beats)
+          $fatal(1, "frame out, but only %0d raw and %0d map beats taken of %0d", i, j, beats);
+        $display("PASS: %0d beats match %s", beats, dir);
         $finish;
       end
     end

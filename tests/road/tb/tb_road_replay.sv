@@ -4,38 +4,38 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run with +vectors=<set folder> +width +height (the manifest's config): the stage's
-// configuration is the set's cfg.hex, one word for cfg_road_i (scw_pkg::road_cfg_t; its fields
-// in the manifest's layout). Parameters: config.ppc, max_width_px, max_height (the build), beats
-// (lines of in.hex and expected.hex), frames and fit_clocks (for the timeout only), CfgW
-// (cfg.hex's width). +stalls=0 turns the idle input cycles and the
-// backpressure off (to tell a stall bug from another).
+// Run with +vectors=<set folder> +width +height +beats +frames (the manifest's config; beats are
+// the lines of in.hex and expected.hex): the stage's configuration is the set's cfg.hex, one
+// word for cfg_road_i (scw_pkg::road_cfg_t; its fields in the manifest's layout). Parameters:
+// config.ppc, max_width_px, max_height (the build), fit_clocks (for the timeout only), CfgW
+// (cfg.hex's width), and Cap, the most beats a set may have. +stalls=0 turns the idle input
+// cycles and the backpressure off (to tell a stall bug from another).
 // Plain SystemVerilog that Verilator 5.006 and Icarus Verilog 11 (-g2012) both take: no `inside`,
 // no `int unsigned` parameters, no concurrent assertions.
 module tb_road_replay #(
   parameter int Ppc        = 2,
   parameter int MaxWidthPx = 64,
   parameter int MaxHeight  = 48,
-  parameter int Beats      = 1536,
-  parameter int Frames     = 1,
+  parameter int Cap        = 16384,
   parameter int FitClocks  = 256,
   parameter int CfgW       = 173   // scw_pkg::RoadCfgBits
 );
   localparam int DataW = Ppc * 16;
-  // Generous: a beat a clock, a fit before every frame; the source idles 1 clock in 4 and the
-  // sink 3 in 7.
-  localparam int MaxCycles = 8 * Beats + 4 * (Frames + 1) * (FitClocks + 16) + 10000;
-
-  logic [DataW+1:0] in_mem  [Beats];  // {eol, sof, px[Ppc-1] .. px[0]}, 16-bit Q11.4 pixels
-  logic [DataW+1:0] exp_mem [Beats];
+  logic [DataW+1:0] in_mem  [Cap];  // {eol, sof, px[Ppc-1] .. px[0]}, 16-bit Q11.4 pixels
+  logic [DataW+1:0] exp_mem [Cap];
   string dir;
-  int width, height;
+  int width, height, beats, frames, max_cycles;
   logic [CfgW-1:0] cfg_mem [1];
   int stalls = 1;
   int per_row = 1, per_frame = 1;  // beats
   initial begin
     if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    beats = tb_replay_count("beats", Cap);
+    frames = tb_replay_count("frames", Cap);
+    // Generous: a beat a clock, a fit before every frame; the source idles 1 clock in 4 and the
+    // sink 3 in 7.
+    max_cycles = 8 * beats + 4 * (frames + 1) * (FitClocks + 16) + 10000;
     if (!$value$plusargs("width=%d", width) || !$value$plusargs("height=%d", height))
       $fatal(1, "give the set's config: +width +height");
     if (width % Ppc != 0 || width > MaxWidthPx || height > MaxHeight)
@@ -43,12 +43,12 @@ module tb_road_replay #(
              width, height, Ppc, MaxWidthPx, MaxHeight);
     per_row = width / Ppc;
     per_frame = per_row * height;
-    if (per_frame * Frames != Beats)
-      $fatal(1, "%0d frames of %0d x %0d at %0d px a beat are not %0d beats", Frames, width,
-             height, Ppc, Beats);
+    if (per_frame * frames != beats)
+      $fatal(1, "%0d frames of %0d x %0d at %0d px a beat are not %0d beats", frames, width,
+             height, Ppc, beats);
     $readmemh({dir, "/cfg.hex"}, cfg_mem, 0, 0);
-    $readmemh({dir, "/in.hex"}, in_mem, 0, Beats - 1);
-    $readmemh({dir, "/expected.hex"}, exp_mem, 0, Beats - 1);
+    $readmemh({dir, "/in.hex"}, in_mem, 0, beats - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, beats - 1);
   end
 
   logic clk, rst_n;
@@ -60,11 +60,12 @@ module tb_road_replay #(
   int i;
   logic in_valid, in_ready;
   logic [DataW+1:0] in_beat;
-  tb_replay_source #(.Count(Beats), .Period(4), .Idle(3)) u_in (
-    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .valid_o(in_valid),
+  tb_replay_source #(.Period(4), .Idle(3)) u_in (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .count_i(beats),
+    .valid_o(in_valid),
     .count_o(i)
   );
-  assign in_beat  = in_mem[(i < Beats) ? i : 0];
+  assign in_beat  = in_mem[(i < beats) ? i : 0];
 
   // Sink: each beat taken must be the next line of expected.hex.
   int o = 0;
@@ -116,15 +117,15 @@ module tb_road_replay #(
   end
 
   always @(posedge clk) begin
-    if (cyc > MaxCycles)
-      $fatal(1, "timeout after %0d of %0d beats out (%0d in, cycle %0d)", o, Beats, i, cyc);
+    if (cyc > max_cycles)
+      $fatal(1, "timeout after %0d of %0d beats out (%0d in, cycle %0d)", o, beats, i, cyc);
     if (rst_n && out_valid === 1'bx) $fatal(1, "out_valid is x (cycle %0d)", cyc);
     if (out_valid && out_ready) begin
       if ({out_eol, out_sof, out_data} !== exp_mem[o]) mismatch(o, {out_eol, out_sof, out_data});
       o <= o + 1;
-      if (o + 1 == Beats) begin
-        if (i != Beats) $fatal(1, "all beats out, but only %0d of %0d taken", i, Beats);
-        $display("PASS: %0d beats match %s (%0d frames, %0d cycles)", Beats, dir, Frames, cyc);
+      if (o + 1 == beats) begin
+        if (i != beats) $fatal(1, "all beats out, but only %0d of %0d taken", i, beats);
+        $display("PASS: %0d beats match %s (%0d frames, %0d cycles)", beats, dir, frames, cyc);
         $finish;
       end
     end

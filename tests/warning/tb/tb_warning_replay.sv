@@ -4,16 +4,16 @@
 `timescale 1ns / 1ps
 `default_nettype none
 
-// Run with +vectors=<set folder>: the stage's configuration is the set's cfg.hex, one word for
+// Run with +vectors=<set folder> +words_in +words_out (the manifest's config; words_out =
+// frames: one result a frame): the stage's configuration is the set's cfg.hex, one word for
 // cfg_warning_i (scw_pkg::warning_cfg_t; its fields in the manifest's layout).
-// Parameters: config.max_disparity_px (the build), words_in, words_out (= frames: one result a
-// frame), the words' widths.
+// Parameters: config.max_disparity_px (the build), the words' widths, and Cap, the most words a
+// set may have.
 // +stalls=0 turns the idle input cycles and the backpressure off (to tell a stall bug from
 // another).
 module tb_warning_replay #(
   parameter int MaxDisparityPx = 128,
-  parameter int WordsIn        = 1,
-  parameter int WordsOut       = 1,
+  parameter int Cap            = 16384,
   // The words' widths: the manifest's in.hex and expected.hex width_bits less the last bit (the
   // labelling object word and the frame result at scw_pkg's widths).
   parameter int InW            = 897,
@@ -21,22 +21,24 @@ module tb_warning_replay #(
   parameter int CfgW           = 237   // cfg.hex's width_bits: scw_pkg::WarningCfgBits
 );
   localparam int Latency = 64 + 47;  // hls::warning::kLatency (kRuleLatency + 47)
-  // Generous: the stage takes a word a clock unless its result waits; the source idles 1 clock
-  // in 4 and the sink 3 in 7.
-  localparam longint MaxCycles = 8 * (WordsIn + WordsOut) + 8 * Latency + 1000;
-
-  logic [InW:0]  in_mem  [WordsIn];   // {last, data[InW-1:0]}
-  logic [OutW:0] exp_mem [WordsOut];  // {last, data[OutW-1:0]}
+  logic [InW:0]  in_mem  [Cap];  // {last, data[InW-1:0]}
+  logic [OutW:0] exp_mem [Cap];  // {last, data[OutW-1:0]}
   string dir;
-  int stalls = 1;
+  int stalls = 1, words_in, words_out;
+  longint max_cycles;
   logic [CfgW-1:0] cfg_mem [1];
   // cfg_warning_i is static: it takes its value at time 0, long before the first word.
   initial begin
     if ($value$plusargs("stalls=%d", stalls)) begin end
     if (!$value$plusargs("vectors=%s", dir)) $fatal(1, "give +vectors=<vector set folder>");
+    words_in = tb_replay_count("words_in", Cap);
+    words_out = tb_replay_count("words_out", Cap);
+    // Generous: the stage takes a word a clock unless its result waits; the source idles 1
+    // clock in 4 and the sink 3 in 7.
+    max_cycles = 8 * (words_in + words_out) + 8 * Latency + 1000;
     $readmemh({dir, "/cfg.hex"}, cfg_mem, 0, 0);
-    $readmemh({dir, "/in.hex"}, in_mem, 0, WordsIn - 1);
-    $readmemh({dir, "/expected.hex"}, exp_mem, 0, WordsOut - 1);
+    $readmemh({dir, "/in.hex"}, in_mem, 0, words_in - 1);
+    $readmemh({dir, "/expected.hex"}, exp_mem, 0, words_out - 1);
   end
 
   logic clk, rst_n;
@@ -47,11 +49,12 @@ module tb_warning_replay #(
   int i;
   logic in_valid, in_ready;
   logic [InW:0] in_word;
-  tb_replay_source #(.Count(WordsIn), .Period(4), .Idle(3)) u_in (
-    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .valid_o(in_valid),
+  tb_replay_source #(.Period(4), .Idle(3)) u_in (
+    .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .count_i(words_in),
+    .valid_o(in_valid),
     .count_o(i)
   );
-  assign in_word  = in_mem[(i < WordsIn) ? i : 0];
+  assign in_word  = in_mem[(i < words_in) ? i : 0];
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each word taken must be the next expected one.
   int o = 0;
@@ -72,12 +75,9 @@ module tb_warning_replay #(
     .out_last_o(out_last)
   );
 
-  // A set made at other scw_pkg widths (a width changed since) holds words this RTL cannot
-  // match: say so, rather than fail on the first word that differs.
   initial begin
-    if ($bits(u_dut.in_data_i) != InW || $bits(u_dut.out_data_o) != OutW)
-      $fatal(1, "the set's object and result words are %0d and %0d bits, this scw_warning's %0d and %0d: the set was made at other scw_pkg widths; regenerate it (scripts/regen_vectors.sh) or replay it on the RTL it was made for",
-             InW, OutW, $bits(u_dut.in_data_i), $bits(u_dut.out_data_o));
+    tb_replay_widths("object", "scw_warning", InW, $bits(u_dut.in_data_i));
+    tb_replay_widths("result", "scw_warning", OutW, $bits(u_dut.out_data_o));
   end
 
   // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
@@ -91,9 +91,9 @@ module tb_warning_replay #(
   end
 
   always @(posedge clk) begin
-    if (cyc > MaxCycles)
-      $fatal(1, "timeout after %0d of %0d results (%0d of %0d words in)", o, WordsOut, i,
-             WordsIn);
+    if (cyc > max_cycles)
+      $fatal(1, "timeout after %0d of %0d results (%0d of %0d words in)", o, words_out, i,
+             words_in);
     if (rst_n && (in_ready === 1'bx || out_valid === 1'bx))
       $fatal(1, "in_ready_o or out_valid_o is X (cycle %0d)", cyc);
     if (out_valid && out_ready) begin
@@ -106,10 +106,10 @@ module tb_warning_replay #(
                "(severity %0d, index %0d, distance %0d mm); see expected.csv row %0d",
                exp_mem[o][1:0], exp_mem[o][54:39], $signed(exp_mem[o][86:55]), o);
       o <= o + 1;
-      if (o + 1 == WordsOut) begin
-        if (i != WordsIn)
-          $fatal(1, "all results out, but only %0d of %0d words taken", i, WordsIn);
-        $display("PASS: %0d beats match %s (%0d words in, %0d cycles)", WordsOut, dir, WordsIn,
+      if (o + 1 == words_out) begin
+        if (i != words_in)
+          $fatal(1, "all results out, but only %0d of %0d words taken", i, words_in);
+        $display("PASS: %0d beats match %s (%0d words in, %0d cycles)", words_out, dir, words_in,
                  cyc);
         $finish;
       end
