@@ -19,6 +19,7 @@
 #include "host/io/image_file.hpp"
 #include "host/labelling/run_model.hpp"
 #include "host/pipeline/rtl_engine.hpp"
+#include "sim/core/simulator.hpp"
 
 namespace scw::cli {
 namespace {
@@ -34,6 +35,7 @@ struct RunOptions {
 };
 
 void run_chain(RunOptions& o, const CLI::App& cmd) {
+  sim::check_threads(o.threads, "--threads");  // the simulator's rule, as scw sim checks it
   if (!o.tiles.empty()) std::tie(o.run.tiles_x, o.run.tiles_y) = labelling::parse_tiles(o.tiles);
   o.run.mode = disparity::mode_from_name(o.mode);
   const auto pairs = app::pairs_of(o.left, o.right, o.sequence);
@@ -74,8 +76,10 @@ void run_chain(RunOptions& o, const CLI::App& cmd) {
           std::cout << j.dump() << "\n";
       },
       pictures, split);
-  write_manifest_if_sharded(o.shard, cmd, {"out-dir"},
-                            {"", {}, {}, pairs.size(), "frames", "", {"results.jsonl"}}, o.out_dir);
+  app::ShardManifest m;  // the rest is the shard's, filled in from --shard and the options
+  m.total = pairs.size();
+  m.concatenate = {"results.jsonl"};
+  write_manifest_if_sharded(o.shard, cmd, {"out-dir"}, m, o.out_dir);
   std::cout << "wrote " << frames << (frames == 1 ? " frame" : " frames") << " in " << o.out_dir
             << " (results.jsonl; a frame's " << app::frame_file_names(pictures) << ")\n";
 }
@@ -100,8 +104,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads,
                   "with --engine rtl: 1, or 2 to step the disparity and road stages on a second "
                   "thread, the same results (docs/sim.md)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({1, 2}));
+      ->capture_default_str();
   cmd->add_option("--engine", o->engine,
                   "cpp: the stages' C++ models; rtl: every block Verilated (rectified pairs, a "
                   "built size: small up to 128 x 96, window 9, 16 disparities, 2x2 tiles)")

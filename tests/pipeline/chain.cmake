@@ -44,7 +44,12 @@ add_test(NAME "pipeline:cli sim and run refuse the thread counts they cannot use
                             --baseline 0.1 --left '${PROJECT_SOURCE_DIR}/data/tsukuba/scene1.row3.col3.ppm' \
                             --right '${PROJECT_SOURCE_DIR}/data/tsukuba/scene1.row3.col4.ppm' \
                             --out-dir cli_run_t2 2> cli_run_t2.err && \
-                          grep -q 'give --engine rtl with it' cli_run_t2.err"
+                          grep -q 'give --engine rtl with it' cli_run_t2.err && \
+                          ! '$<TARGET_FILE:scw>' run --threads 3 --rectified --focal 615 \
+                            --baseline 0.1 --left '${PROJECT_SOURCE_DIR}/data/tsukuba/scene1.row3.col3.ppm' \
+                            --right '${PROJECT_SOURCE_DIR}/data/tsukuba/scene1.row3.col4.ppm' \
+                            --out-dir cli_run_t3 2> cli_run_t3.err && \
+                          grep -q -- '--threads 3: use 1 or 2' cli_run_t3.err"
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 add_test(NAME "pipeline:cli sim refuses an unknown configuration and names the two"
          COMMAND bash -c "! '$<TARGET_FILE:scw>' sim --config big 2> cli_sim_bad.err && \
