@@ -36,6 +36,10 @@ struct RunOptions {
 
 void run_chain(RunOptions& o, const CLI::App& cmd) {
   sim::check_threads(o.threads, "--threads");  // the simulator's rule, as scw sim checks it
+  if (o.threads != 1 && o.engine != "rtl")
+    throw CLI::ValidationError("--threads",
+                               "two threads step the Verilated chain: give "
+                               "--engine rtl with it, or leave --threads at 1");
   if (!o.tiles.empty()) std::tie(o.run.tiles_x, o.run.tiles_y) = labelling::parse_tiles(o.tiles);
   o.run.mode = disparity::mode_from_name(o.mode);
   const auto pairs = app::pairs_of(o.left, o.right, o.sequence);
@@ -48,10 +52,6 @@ void run_chain(RunOptions& o, const CLI::App& cmd) {
             << "), window " << o.run.window << ", d " << o.run.min_disp << " .. "
             << o.run.max_disp << ", " << o.mode << " mode"
             << (o.run.ground ? ", ground removal" : "") << "\n";
-  if (o.threads != 1 && o.engine != "rtl")
-    throw CLI::ValidationError("--threads",
-                               "two threads step the Verilated chain: give "
-                               "--engine rtl with it, or leave --threads at 1");
   if (o.engine == "rtl")
     std::cerr << "run: the stages run as Verilated RTL; the C++ models check every object and "
                  "frame result\n";
