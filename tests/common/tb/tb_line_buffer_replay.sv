@@ -53,6 +53,11 @@ module tb_line_buffer_replay #(
     .out_sof_o(out_sof), .out_eol_o(out_eol), .err_o(err)
   );
 
+  tb_replay_hold #(.Bits(OutW + 2)) u_hold (
+    .clk, .cyc_i(cyc), .valid_i(out_valid), .ready_i(out_ready),
+    .data_i({out_eol, out_sof, out_data}), .index_i(o)
+  );
+
   // A bound in clocks, not a delay: Verilator 5.006 keeps a delay in 32 bits of the time
   // precision (ps), so a large set's delay wrapped and fired early.
   always @(posedge clk)

@@ -2,8 +2,9 @@
 // What every replay testbench shares, so that each holds only its block's ports and checks:
 // the clock, the reset and the cycle count (tb_replay_clock), a source that offers beats on a
 // fixed pattern of cycles and holds a beat until it is taken (tb_replay_source), a sink's ready
-// on another pattern (tb_replay_sink), a set's counts given at run time (tb_replay_count) and
-// the refusal of a set made at other word widths (tb_replay_widths).
+// on another pattern (tb_replay_sink), the check that a stalled output holds (tb_replay_hold), a
+// set's counts given at run time (tb_replay_count) and the refusal of a set made at other word
+// widths (tb_replay_widths).
 `timescale 1ns / 1ps
 `default_nettype none
 
@@ -89,4 +90,29 @@ module tb_replay_sink #(
 );
   localparam logic [6:0] Pattern = 7'b1001011;
   assign ready_o = Pattern[(cyc_i + Phase) % 7] || !gaps_i;
+endmodule
+
+// AXI4-Stream's rule on an output: a beat offered and not taken stays offered, unchanged, on the
+// next clock, whatever the stalls do. Stops naming the beat's index (Name: beat, word, result;
+// untyped, as Icarus 11 prints a sized string parameter as empty).
+module tb_replay_hold #(
+  parameter     Name = "beat",
+  parameter int Bits = 1
+) (
+  input logic            clk,
+  input longint          cyc_i,
+  input logic            valid_i,
+  input logic            ready_i,
+  input logic [Bits-1:0] data_i,  // every bit offered with valid: data and its sideband
+  input int              index_i  // the index of the beat on offer
+);
+  logic stalled = 1'b0;
+  logic [Bits-1:0] held;
+  always @(posedge clk) begin
+    if (stalled && (valid_i !== 1'b1 || data_i !== held))
+      $fatal(1, "%0s %0d: valid or the %0s changed while stalled (cycle %0d)", Name, index_i, Name,
+             cyc_i);
+    stalled <= valid_i && !ready_i;
+    held <= data_i;
+  end
 endmodule

@@ -84,15 +84,10 @@ module tb_labelling_replay #(
 
   initial tb_replay_widths("object", "scw_labelling", OutW, $bits(u_dut.out_data_o));
 
-  // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
-  logic stalled = 1'b0;
-  logic [OutW:0] stalled_word;
-  always @(posedge clk) begin
-    if (stalled && (out_valid !== 1'b1 || {out_last, out_data} !== stalled_word))
-      $fatal(1, "word %0d: out_valid or the word changed while stalled (cycle %0d)", o, cyc);
-    stalled <= out_valid && !out_ready;
-    stalled_word <= {out_last, out_data};
-  end
+  tb_replay_hold #(.Name("word"), .Bits(OutW + 1)) u_hold (
+    .clk, .cyc_i(cyc), .valid_i(out_valid), .ready_i(out_ready), .data_i({out_last, out_data}),
+    .index_i(o)
+  );
 
   always @(posedge clk) begin
     if (cyc > max_cycles)

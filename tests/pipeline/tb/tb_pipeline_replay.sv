@@ -180,6 +180,15 @@ module tb_pipeline_replay #(
   tb_pipeline_stream_check #(.Name("results"), .Count("results"), .Cap(Cap), .Bits(ResBits),
     .Pixel(0)) u_results (.clk(clk), .take(out_valid && out_ready), .line({out_last, out_data}),
     .seen(n_res));
+  // The top's two outputs hold a stalled word.
+  tb_replay_hold #(.Name("result"), .Bits(OutW + 1)) u_out_hold (
+    .clk, .cyc_i(cyc), .valid_i(out_valid), .ready_i(out_ready), .data_i({out_last, out_data}),
+    .index_i(n_res)
+  );
+  tb_replay_hold #(.Name("word"), .Bits(ObjW + 1)) u_obj_hold (
+    .clk, .cyc_i(cyc), .valid_i(obj_valid), .ready_i(obj_ready), .data_i({obj_last, obj_data}),
+    .index_i(n_table)
+  );
 
   always @(posedge clk) begin
     if (cyc > max_cycles)

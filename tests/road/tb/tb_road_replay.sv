@@ -105,17 +105,12 @@ module tb_road_replay #(
            (k % per_row) * Ppc + Ppc - 1, got, exp_mem[k]);
   endtask
 
-  // A stalled beat must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
-  logic stalled = 1'b0;
-  logic [DataW+1:0] stalled_beat;
-  // Checkers are plain `always`: Icarus warns about system tasks inside always_ff.
-  always @(posedge clk) begin
-    if (stalled && (out_valid !== 1'b1 || {out_eol, out_sof, out_data} !== stalled_beat))
-      $fatal(1, "beat %0d: out_valid or the beat changed while stalled (cycle %0d)", o, cyc);
-    stalled <= out_valid && !out_ready;
-    stalled_beat <= {out_eol, out_sof, out_data};
-  end
+  tb_replay_hold #(.Name("beat"), .Bits(DataW + 2)) u_hold (
+    .clk, .cyc_i(cyc), .valid_i(out_valid), .ready_i(out_ready),
+    .data_i({out_eol, out_sof, out_data}), .index_i(o)
+  );
 
+  // Checkers are plain `always`: Icarus warns about system tasks inside always_ff.
   always @(posedge clk) begin
     if (cyc > max_cycles)
       $fatal(1, "timeout after %0d of %0d beats out (%0d in, cycle %0d)", o, beats, i, cyc);

@@ -80,15 +80,10 @@ module tb_warning_replay #(
     tb_replay_widths("result", "scw_warning", OutW, $bits(u_dut.out_data_o));
   end
 
-  // A stalled word must stay offered and unchanged (AXI4-Stream), whatever the stalls do.
-  logic stalled = 1'b0;
-  logic [OutW:0] stalled_word;
-  always @(posedge clk) begin
-    if (stalled && (out_valid !== 1'b1 || {out_last, out_data} !== stalled_word))
-      $fatal(1, "result %0d: out_valid or the word changed while stalled (cycle %0d)", o, cyc);
-    stalled <= out_valid && !out_ready;
-    stalled_word <= {out_last, out_data};
-  end
+  tb_replay_hold #(.Name("result"), .Bits(OutW + 1)) u_hold (
+    .clk, .cyc_i(cyc), .valid_i(out_valid), .ready_i(out_ready), .data_i({out_last, out_data}),
+    .index_i(o)
+  );
 
   always @(posedge clk) begin
     if (cyc > max_cycles)
