@@ -13,9 +13,10 @@
 // at one size. The arrays it indexes are built with Cap lines, a parameter.
 function automatic int tb_replay_count(input string name, input int cap);
   int n;
-  if (!$value$plusargs({name, "=%d"}, n)) $fatal(1, "give +%s=N, the set's count (its manifest)", name);
+  if (!$value$plusargs({name, "=%d"}, n))
+    $fatal(1, "give +%s=N, the set's count (its manifest)", name);
   if (n < 1 || n > cap)
-    $fatal(1, "+%s=%0d: this build of the testbench holds 1 to %0d: build it with -GCap=%0d or more",
+    $fatal(1, "+%s=%0d: this build of the testbench holds 1 to %0d: build it with -GCap=%0d",
            name, n, cap, n);
   return n;
 endfunction
