@@ -126,10 +126,10 @@ case "$stage" in
     tb=warning/tb/tb_warning_replay.sv top=scw_warning
     rtl=(common/scw_delay_ring.sv "$(cd "$root/rtl_models" && echo warning/*.sv)")
     dut_params=(MaxDisparityPx=max_disparity_px)
-    counts=(words_in=words_in words_out=words_out)
     tb_params=("InW=$(($(file_field in.hex width_bits) - 1))"
                "OutW=$(($(file_field expected.hex width_bits) - 1))"
-               "CfgW=$(file_field cfg.hex width_bits)") ;;
+               "CfgW=$(file_field cfg.hex width_bits)")
+    counts=(words_in=words_in words_out=words_out) ;;
   pipeline)
     # The whole top; its testbench probes the stages' output ports by hierarchical name, so
     # Yosys keeps the hierarchy.
@@ -168,23 +168,24 @@ for f in "${rtl[@]}"; do
   [ "$f" = common/scw_pkg.sv ] || sources+=("$root/rtl_models/$f")
 done
 
+# The value of a table entry Name=what: what itself when it is a number, else the manifest's key.
+value_of() {
+  local v="${1#*=}"
+  [[ "$v" =~ ^[0-9]+$ ]] || v="$(field "$v")"
+  echo "$v"
+}
 # Name=value for the block's parameters and the testbench's (which repeats the block's).
 dut_values=()
-for kv in "${dut_params[@]}"; do dut_values+=("${kv%%=*}=$(field "${kv#*=}")"); done
+for kv in "${dut_params[@]}"; do dut_values+=("${kv%%=*}=$(value_of "$kv")"); done
 tb_values=("${dut_values[@]}")
-for kv in "${tb_params[@]}"; do
-  v="${kv#*=}"
-  [[ "$v" =~ ^[0-9]+$ ]] || v="$(field "$v")"
-  tb_values+=("${kv%%=*}=$v")
-done
+for kv in "${tb_params[@]}"; do tb_values+=("${kv%%=*}=$(value_of "$kv")"); done
 args=(+vectors="$set_dir")
-for kv in "${plusargs[@]}"; do args+=("+${kv%%=*}=$(field "${kv#*=}")"); done
+for kv in "${plusargs[@]}"; do args+=("+${kv%%=*}=$(value_of "$kv")"); done
 # The counts: plusargs, and Cap, the testbench's array size, a power of two from 16384 up, so that
 # the sets of a block at one size (up to 16384 beats or words each) share one build.
 cap=16384
 for kv in "${counts[@]}"; do
-  v="${kv#*=}"
-  [[ "$v" =~ ^[0-9]+$ ]] || v="$(field "$v")"
+  v="$(value_of "$kv")"
   args+=("+${kv%%=*}=$v")
   while [ "$cap" -lt "$v" ]; do cap=$((cap * 2)); done
 done
