@@ -76,7 +76,7 @@ void run_chain(RunOptions& o, const CLI::App& cmd) {
           std::cout << j.dump() << "\n";
       },
       pictures, split);
-  app::ShardManifest m;  // the rest is the shard's, filled in from --shard and the options
+  app::ShardManifest m;
   m.total = pairs.size();
   m.concatenate = {"results.jsonl"};
   write_manifest_if_sharded(o.shard, cmd, {"out-dir"}, m, o.out_dir);

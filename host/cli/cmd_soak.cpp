@@ -88,7 +88,7 @@ bool run_seeds(SoakOptions& o, const CLI::App& cmd) {
     o.json = o.out_dir + "/seed_" + std::to_string(o.soak.seed) + ".json";
     ok = run_soak(o) && ok;
   }
-  app::ShardManifest m;  // the rest is the shard's, filled in from --shard and the options
+  app::ShardManifest m;
   m.total = static_cast<std::size_t>(o.seeds);
   m.unit = "seeds";
   write_manifest_if_sharded(o.shard, cmd, {"out-dir"}, m, o.out_dir);

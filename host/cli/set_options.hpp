@@ -64,7 +64,7 @@ void write_set_parts(const CLI::App& cmd, const SetOut& o, std::size_t frames, W
     }
   }
   std::filesystem::create_directories(o.out);  // a shard with no frames leaves its folder too
-  app::ShardManifest m;  // the rest is the shard's, filled in from --shard and the options
+  app::ShardManifest m;
   m.total = frames;
   write_manifest_if_sharded(o.shard, cmd, {"out"}, m, o.out);
 }

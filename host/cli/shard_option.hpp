@@ -75,8 +75,9 @@ inline void remove_old_manifest(const std::filesystem::path& dir) {
   std::filesystem::remove(dir / "shard.json");
 }
 
-/// Writes `dir`/shard.json when --shard was given (`m.shard` set from it, `m.settings` from
-/// `cmd`'s options but `leave_out`).
+/// Writes `dir`/shard.json when --shard was given. The caller fills in what only it knows
+/// (`m.total`, `m.unit`, `m.concatenate`); `m.command`, `m.shard` and `m.range` come from `cmd`
+/// and --shard, `m.settings` from `cmd`'s options but `leave_out`.
 inline void write_manifest_if_sharded(const std::string& shard_text, const CLI::App& cmd,
                                       const std::vector<std::string>& leave_out,
                                       app::ShardManifest m, const std::filesystem::path& dir) {

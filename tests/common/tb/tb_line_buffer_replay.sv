@@ -35,8 +35,7 @@ module tb_line_buffer_replay #(
   logic in_valid, in_ready;
   tb_replay_source #(.Period(4), .Idle(3)) u_in (
     .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(in_ready), .count_i(beats),
-    .valid_o(in_valid),
-    .count_o(i)
+    .valid_o(in_valid), .count_o(i)
   );
 
   // Sink: ready on a co-prime 1,1,0,1,0,0,1 cycle; each output must be the next expected line.

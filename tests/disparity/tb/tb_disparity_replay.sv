@@ -6,9 +6,8 @@
 
 // Run with +vectors=<set folder> +width +height +beats (the manifest's config, and the hex files'
 // beats: all three pixel files of a set have frames x W * H / Ppc beats, frames back to back):
-// the rest of the stage's
-// configuration is the set's cfg.hex, one word for cfg_disparity_i (scw_pkg::disparity_cfg_t;
-// its fields in the manifest's layout).
+// the rest of the stage's configuration is the set's cfg.hex, one word for cfg_disparity_i
+// (scw_pkg::disparity_cfg_t; its fields in the manifest's layout).
 // Parameters: config.ppc, max_width_px, max_height, window, num_disp (built candidates), CfgW,
 // cfg.hex's width, and Cap, the most beats a set may have.
 module tb_disparity_replay #(
@@ -56,13 +55,11 @@ module tb_disparity_replay #(
   logic [BeatW+1:0] l_beat, r_beat;
   tb_replay_source #(.Period(4), .Idle(3)) u_l (
     .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(l_ready), .count_i(beats),
-    .valid_o(l_valid),
-    .count_o(i)
+    .valid_o(l_valid), .count_o(i)
   );
   tb_replay_source #(.Period(5), .Idle(2)) u_r (
     .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(r_ready), .count_i(beats),
-    .valid_o(r_valid),
-    .count_o(j)
+    .valid_o(r_valid), .count_o(j)
   );
   assign l_beat  = l_mem[(i < beats) ? i : 0];
   assign r_beat  = r_mem[(j < beats) ? j : 0];

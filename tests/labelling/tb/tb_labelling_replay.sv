@@ -59,8 +59,7 @@ module tb_labelling_replay #(
   logic [17:0] in_beat;
   tb_replay_source #(.Period(4), .Idle(3)) u_in (
     .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .count_i(beats_in),
-    .valid_o(in_valid),
-    .count_o(i)
+    .valid_o(in_valid), .count_o(i)
   );
   assign in_beat  = in_mem[(i < beats_in) ? i : 0];
 

@@ -83,7 +83,7 @@ module tb_pipeline_replay #(
   longint cyc;
   tb_replay_clock u_clock (.clk, .rst_n, .cyc);
 
-  // knots first, one a clock, run_i low; then run_i high for good.
+  // The knots first, one a clock, run_i low; then run_i high for good.
   int k = 0;
   logic run, knot_we;
   assign knot_we = rst_n && (k < knots);
@@ -98,13 +98,11 @@ module tb_pipeline_replay #(
   logic [BeatW+1:0] l_beat, r_beat;
   tb_replay_source #(.Period(4), .Idle(3)) u_l (
     .clk, .run_i(run), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(l_ready), .count_i(raw_beats),
-    .valid_o(l_valid),
-    .count_o(i)
+    .valid_o(l_valid), .count_o(i)
   );
   tb_replay_source #(.Period(5), .Idle(2)) u_r (
     .clk, .run_i(run), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(r_ready), .count_i(raw_beats),
-    .valid_o(r_valid),
-    .count_o(j)
+    .valid_o(r_valid), .count_o(j)
   );
   assign l_beat  = l_mem[(i < raw_beats) ? i : 0];
   assign r_beat  = r_mem[(j < raw_beats) ? j : 0];

@@ -59,8 +59,7 @@ module tb_rectify_replay #(
   logic [BeatW+1:0] in_beat;
   tb_replay_source #(.Period(4), .Idle(3)) u_in (
     .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(in_ready), .count_i(beats),
-    .valid_o(in_valid),
-    .count_o(i)
+    .valid_o(in_valid), .count_o(i)
   );
   assign in_beat  = in_mem[(i < beats) ? i : 0];
 
@@ -70,8 +69,7 @@ module tb_rectify_replay #(
   logic [MapW+1:0] map_beat;
   tb_replay_source #(.Period(5), .Idle(2)) u_map (
     .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(1'b1), .ready_i(map_ready), .count_i(beats),
-    .valid_o(map_valid),
-    .count_o(j)
+    .valid_o(map_valid), .count_o(j)
   );
   assign map_beat  = map_mem[(j < beats) ? j : 0];
 

@@ -51,8 +51,7 @@ module tb_warning_replay #(
   logic [InW:0] in_word;
   tb_replay_source #(.Period(4), .Idle(3)) u_in (
     .clk, .run_i(rst_n), .cyc_i(cyc), .gaps_i(stalls != 0), .ready_i(in_ready), .count_i(words_in),
-    .valid_o(in_valid),
-    .count_o(i)
+    .valid_o(in_valid), .count_o(i)
   );
   assign in_word  = in_mem[(i < words_in) ? i : 0];
 
