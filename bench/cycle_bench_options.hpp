@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// The options the stages' cycle benches share (bench/disparity_cycles, bench/rectify_cycles).
+// What the stages' cycle benches share (bench/disparity_cycles, bench/rectify_cycles): their
+// options and the printf-style number of their summary tables.
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,13 @@ inline void add_cycle_options(CLI::App& app, std::vector<int>& ppc, const std::s
   app.add_option("--frames", frames, "frames back to back (>= 2 for a frame period)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
+}
+
+/// One number printf-style ("%.3f"), for a row of a summary table.
+inline std::string fmt(const char* format, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
 }
 
 }  // namespace scw::bench

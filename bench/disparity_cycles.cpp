@@ -46,6 +46,7 @@
 namespace {
 
 using namespace scw;
+using bench::fmt;
 using hls::disparity::DisparityConfig;
 using nlohmann::json;
 
@@ -179,12 +180,6 @@ Run<typename Model::out_type> drive(const std::string& label, const std::string&
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.err = err_of(model);
   return r;
-}
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
 }
 
 /// The figures of one run; also checks the output's framing (sof and eol where they belong).

@@ -51,6 +51,7 @@
 namespace {
 
 using namespace scw;
+using bench::fmt;
 using bench::kBenchHeight;
 using bench::kBenchRows;
 using bench::kBenchWidth;
@@ -208,12 +209,6 @@ struct Row {  // one line of the summary table
   std::string engine;
   json j;
 };
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
 
 template <int P>
 void bench_ppc(const Options& o, const std::vector<cv::Mat>& imgs, std::vector<Row>& rows,
