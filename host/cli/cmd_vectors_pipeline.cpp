@@ -11,6 +11,7 @@
 #include "host/cli/set_options.hpp"
 #include "host/io/image_file.hpp"
 #include "host/vectors/pipeline_set.hpp"
+#include "host/vectors/vector_set.hpp"
 
 namespace scw::cli {
 
