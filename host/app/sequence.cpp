@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// frame_note(), run_pairs() (host/app/sequence.hpp).
+// frame_note(), run_summary(), run_pairs() (host/app/sequence.hpp).
 #include "host/app/sequence.hpp"
 
 #include <algorithm>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "host/app/frame_files.hpp"
@@ -17,6 +18,17 @@ std::string frame_note(const FrameOutput& f) {
   if (f.deciding_label > 0)
     note += " at " + std::to_string(f.result.distance_mm / 1000.0).substr(0, 5) + " m";
   return note;
+}
+
+std::string run_summary(const RunOptions& run, std::size_t pairs, cv::Size size) {
+  const auto& w = run.warning;
+  std::ostringstream s;
+  s << pairs << (pairs == 1 ? " pair" : " pairs") << ", " << size.width << " x " << size.height
+    << " px, f " << w.focal_px << " px, baseline " << w.baseline_m << " m, principal point ("
+    << w.cu_px << ", " << w.cv_px << "), window " << run.window << ", d " << run.min_disp << " .. "
+    << run.max_disp << ", " << disparity::mode_name(run.mode) << " mode"
+    << (run.ground ? ", ground removal" : "");
+  return s.str();
 }
 
 void run_pairs(const RunnerFactory& make, const std::vector<PairFiles>& pairs, cv::Size size,

@@ -29,6 +29,10 @@ using FrameDone = std::function<void(std::size_t, const FrameOutput&, const nloh
 /// ("high at 4.219 m").
 std::string frame_note(const FrameOutput& f);
 
+/// What a run is about to do, for its first line: the pairs, their size, the camera and the
+/// stages' settings ("2 pairs, 1280 x 480 px, f 1400 px, baseline 0.3 m, ...").
+std::string run_summary(const RunOptions& run, std::size_t pairs, cv::Size size);
+
 /// A fresh Runner: a new tracker, road stage and engine. A run calls it at each frame where its
 /// state restarts.
 using RunnerFactory = std::function<std::unique_ptr<Runner>()>;

@@ -45,13 +45,7 @@ void run_chain(RunOptions& o, const CLI::App& cmd) {
   const auto pairs = app::pairs_of(o.left, o.right, o.sequence);
   const cv::Mat first = host::io::read_grey_image(pairs.front().first.string());
   auto camera = app::set_up_camera(o.camera, first.size(), o.run.warning);
-  const auto& w = o.run.warning;
-  std::cerr << "run: " << pairs.size() << (pairs.size() == 1 ? " pair" : " pairs") << ", "
-            << first.cols << " x " << first.rows << " px, f " << w.focal_px << " px, baseline "
-            << w.baseline_m << " m, principal point (" << w.cu_px << ", " << w.cv_px
-            << "), window " << o.run.window << ", d " << o.run.min_disp << " .. "
-            << o.run.max_disp << ", " << o.mode << " mode"
-            << (o.run.ground ? ", ground removal" : "") << "\n";
+  std::cerr << "run: " << app::run_summary(o.run, pairs.size(), first.size()) << "\n";
   if (o.engine == "rtl")
     std::cerr << "run: the stages run as Verilated RTL; the C++ models check every object and "
                  "frame result\n";

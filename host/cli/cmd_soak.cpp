@@ -52,10 +52,8 @@ bool run_soak(SoakOptions& o) {
   const auto summary = host::soak::run_soak(s);
   std::cout << summary.text();
   nlohmann::json j = summary.to_json();
+  j.update(s.to_json());
   j["config"] = o.config;
-  j["seed"] = s.seed;
-  j["malformed_every"] = s.malformed_every;
-  j["size"] = {s.width, s.height};
   bool ok = summary.passed();
   if (o.resets > 0) {
     const auto rs = host::soak::run_reset_trials(host::soak::ResetOptions::like(s, o.resets));

@@ -36,6 +36,8 @@ struct SoakOptions {
   int inject_divergence = -1;  // >= 0: flip a bit of the RTL's result of this frame, to see the
                                // checker fire and the trace written
   Progress progress;
+  /// The settings a summary records beside its counts: seed, malformed_every and size.
+  nlohmann::json to_json() const;
 };
 
 /// Where the RTL first differs from the C++ chain: the result's index, the cycle of the first of

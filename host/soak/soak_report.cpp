@@ -63,6 +63,10 @@ std::pair<int, std::optional<Divergence>> compare_runs(const RunOutput& cpp, con
   return {count, first};
 }
 
+nlohmann::json SoakOptions::to_json() const {
+  return {{"seed", seed}, {"malformed_every", malformed_every}, {"size", {width, height}}};
+}
+
 nlohmann::json SoakSummary::to_json() const {
   nlohmann::json j;
   j["frames"] = frames;
