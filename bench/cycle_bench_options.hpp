@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the stages' cycle benches share (bench/disparity_cycles, bench/rectify_cycles): their
-// options and the printf-style number of their summary tables.
+// options, the printf-style number of their summary tables and their --json file.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "host/io/json_file.hpp"
 
 namespace scw::bench {
 
@@ -30,6 +33,16 @@ inline std::string fmt(const char* format, double v) {
   char b[64];
   std::snprintf(b, sizeof b, format, v);
   return b;
+}
+
+/// --json PATH: every row's record (its member `j`) as one array; nothing when PATH is empty.
+template <class Rows>
+void write_rows_json(const std::string& path, const Rows& rows) {
+  if (path.empty()) return;
+  nlohmann::json all = nlohmann::json::array();
+  for (const auto& r : rows) all.push_back(r.j);
+  host::io::write_json(path, all);
+  std::printf("wrote %s\n", path.c_str());
 }
 
 }  // namespace scw::bench

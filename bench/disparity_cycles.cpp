@@ -17,7 +17,6 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -547,16 +546,7 @@ int main(int argc, char** argv) {
         if (p == 2) bench_ppc<2>(o, pairs, m, refs, rows, ok);
       }
     print_table(rows);
-    if (!o.json_out.empty()) {
-      json all = json::array();
-      for (const auto& r : rows) all.push_back(r.j);
-      const std::filesystem::path jp(o.json_out);
-      if (jp.has_parent_path()) std::filesystem::create_directories(jp.parent_path());
-      std::ofstream f(jp);
-      f << all.dump(2) << "\n";
-      if (!f) throw std::runtime_error("cannot write '" + o.json_out + "'");
-      std::printf("wrote %s\n", o.json_out.c_str());
-    }
+    scw::bench::write_rows_json(o.json_out, rows);
     std::printf("%s\n", ok ? "OK" : "FAILED (see above)");
     return ok ? 0 : 1;
   } catch (const std::exception& e) {

@@ -18,7 +18,6 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -442,16 +441,7 @@ int main(int argc, char** argv) {
       if (p == 4) bench_ppc<4>(o, imgs, rows, ok);
     }
     print_table(rows);
-    if (!o.json_out.empty()) {
-      json all = json::array();
-      for (const auto& r : rows) all.push_back(r.j);
-      const std::filesystem::path jp(o.json_out);
-      if (jp.has_parent_path()) std::filesystem::create_directories(jp.parent_path());
-      std::ofstream f(jp);
-      f << all.dump(2) << "\n";
-      if (!f) throw std::runtime_error("cannot write '" + o.json_out + "'");
-      std::printf("wrote %s\n", o.json_out.c_str());
-    }
+    scw::bench::write_rows_json(o.json_out, rows);
     std::printf("%s\n",
                 ok ? "OK: every output beat equals the integer reference" : "FAILED (see above)");
     return ok ? 0 : 1;
