@@ -124,7 +124,8 @@ cv::Mat disparity_image(const cv::Mat& left, const cv::Mat& right, int window_n,
          " px wide; the built stage takes at most " + std::to_string(kHostMaxWidthPx));
   if (dmax < dmin)
     fail("the largest disparity " + std::to_string(dmax) + " is below the smallest " +
-         std::to_string(dmin));
+         std::to_string(dmin) + "; give a range whose largest is at least its smallest, e.g. " +
+         std::to_string(dmax) + " .. " + std::to_string(dmin));
   if (dmin < 0)
     fail("the smallest disparity is " + std::to_string(dmin) +
          "; the streaming stage takes dmin >= 0 (it matches the right image only to the left "
