@@ -2,6 +2,8 @@
 // Latency of the RTL decision unit (rtl_models/disparity/scw_disparity_decide.sv) in clocks.
 #pragma once
 
+#include "hls/common/bits.hpp"
+
 namespace scw::hls::disparity {
 
 /// Clocks from a beat on scw_disparity_decide's inputs to its decide() value on disp_o, for a
@@ -9,9 +11,7 @@ namespace scw::hls::disparity {
 constexpr int decide_latency(int num_disp) {
   // The argmin tree has ceil(log2 num_disp) comparator levels, each registered (two
   // compare-and-select levels in a row make too long a path).
-  int levels = 0;
-  while ((1 << levels) < num_disp) ++levels;
-  const int tree = levels;
+  const int tree = clog2(num_disp);
   // A: m * K[16:0] and m * K[high] (K = ceil(U 2^s / 100)) into the DSPs' M registers; beside
   //    them dmin + best, the limit and uniqueness-mask compares, the sub-pixel differences.
   // B: the DSPs' P registers; the sign picks |diff| and mx.

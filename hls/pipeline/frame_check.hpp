@@ -7,16 +7,13 @@
 #include <string>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/bits.hpp"
 #include "hls/common/stream.hpp"
 
 namespace scw::hls::pipeline {
 
 /// Bits of a count 0 .. n (the RTL's $clog2(n + 1)).
-constexpr int count_bits(int n) {
-  int b = 0;
-  while ((1 << b) < n + 1) ++b;
-  return b;
-}
+constexpr int count_bits(int n) { return clog2(n + 1LL); }
 
 /// Built-in capacity of one frame check (the RTL's parameters, by their names).
 template <int P, int MaxWidthPx, int MaxHeight>

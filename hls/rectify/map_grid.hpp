@@ -12,6 +12,13 @@
 
 namespace scw::hls::rectify {
 
+/// The signed knot coordinate width for images up to max_wh pixels on a side: an integer part of
+/// clog2(max_wh) + 2 bits (KnotBits below) and knot_frac_bits fractional bits. The host's
+/// default for a run-time size (host/rectify/map_grid.hpp) is the same expression.
+constexpr int knot_bits(long long max_wh, int knot_frac_bits) {
+  return clog2(max_wh) + 2 + knot_frac_bits;
+}
+
 /// One knot: the raw source position of output pixel (i G, j G), signed fixed point with
 /// KnotFracBits fractional bits (more than the map's F, so that rounding the knots costs at
 /// most 1/8 of the map's own rounding step: see MapGridParams).
@@ -55,7 +62,7 @@ struct MapGridParams {
   static constexpr int kKnotColBits = clog2(kMaxKnotCols);
   static constexpr int kKnotRowBits = clog2(kMaxKnotRows);
   /// Signed knot coordinate width.
-  static constexpr int kKnotBits = clog2(kMaxWH) + 2 + KnotFracBits;
+  static constexpr int kKnotBits = knot_bits(kMaxWH, KnotFracBits);
   /// The map stream's coordinate width, as RectifyParams computes it.
   static constexpr int kCoordBits =
       clog2(static_cast<long long>(kMaxWH) * (1LL << FracBits) + 1) + 1;

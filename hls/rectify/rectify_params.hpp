@@ -5,14 +5,9 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/bits.hpp"
 
 namespace scw::hls::rectify {
-
-constexpr int clog2(long long v) {
-  int b = 0;
-  while ((1LL << b) < v) ++b;
-  return b;
-}
 
 /// One element of the map stream: the source position of one output pixel in the raw image,
 /// signed fixed point with F fractional bits (x = column, y = row; x = 3.5 is 3.5 * 2^F).

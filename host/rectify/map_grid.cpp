@@ -11,12 +11,6 @@
 namespace scw::rectify {
 namespace {
 
-int clog2(long long v) {
-  int b = 0;
-  while ((1LL << b) < v) ++b;
-  return b;
-}
-
 /// floor(a / 2^s) for negative a too, without relying on >> of negative numbers.
 std::int64_t floor_shift(std::int64_t a, int s) {
   const std::int64_t d = std::int64_t{1} << s;
@@ -26,7 +20,7 @@ std::int64_t floor_shift(std::int64_t a, int s) {
 }  // namespace
 
 int default_knot_bits(int width, int height, int knot_frac_bits) {
-  return clog2(std::max(width, height)) + 2 + knot_frac_bits;
+  return hls::rectify::knot_bits(std::max(width, height), knot_frac_bits);
 }
 
 void extended_float_maps(const cv::Mat& camera, const cv::Mat& dist, const cv::Mat& rot,
