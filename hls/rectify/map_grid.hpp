@@ -63,9 +63,8 @@ struct MapGridParams {
   static constexpr int kKnotRowBits = clog2(kMaxKnotRows);
   /// Signed knot coordinate width.
   static constexpr int kKnotBits = knot_bits(kMaxWH, KnotFracBits);
-  /// The map stream's coordinate width, as RectifyParams computes it.
-  static constexpr int kCoordBits =
-      clog2(static_cast<long long>(kMaxWH) * (1LL << FracBits) + 1) + 1;
+  /// The map stream's coordinate width, the rectify stage's (coord_bits).
+  static constexpr int kCoordBits = coord_bits(kMaxWH, FracBits);
   /// The final shift: sum K w carries 2k + KnotFracBits fractional bits, the map F.
   static constexpr int kShift = 2 * GridLog2 + KnotFracBits - FracBits;
   /// Register stages from issuing a beat (the knot RAMs sample its address) to presenting it:

@@ -28,6 +28,13 @@ struct MapBeat : Beat<MapPoint, P> {
   static constexpr int kCoordBits = CoordBits;
 };
 
+/// The map stream's signed coordinate width for images up to max_wh pixels on a side at
+/// frac_bits fractional bits: it holds -2^F .. max_wh * 2^F. The rectify stage and the map grid
+/// that feeds it both take it.
+constexpr int coord_bits(long long max_wh, int frac_bits) {
+  return clog2(max_wh * (1LL << frac_bits) + 1) + 1;
+}
+
 /// Built-in limits of one rectify stage; the single source the RTL (scw_rectify) is checked
 /// against. Rows raw rows are kept in block RAM (a power of two, so the row slot is a bit
 /// field); a map is served when every raw row an output row needs lies in that window
@@ -41,8 +48,7 @@ struct RectifyParams {
   static constexpr int kFracBits = FracBits;
   /// Signed coordinate width: holds -2^F .. max(W, H) * 2^F.
   static constexpr int kCoordBits =
-      clog2(static_cast<long long>(MaxWidthPx > MaxHeight ? MaxWidthPx : MaxHeight) *
-                (1LL << FracBits) + 1) + 1;
+      coord_bits(MaxWidthPx > MaxHeight ? MaxWidthPx : MaxHeight, FracBits);
   /// Register stages from accepting a map beat to presenting its output beat: RAM addresses,
   /// RAM read + window compares, bank registers + tap enables, bank pick, tap differences,
   /// horizontal blend (DSP M, P), b - a, vertical blend + round (DSP M, P). Shared by the
