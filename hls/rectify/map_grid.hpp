@@ -12,6 +12,9 @@
 
 namespace scw::hls::rectify {
 
+/// Knot columns (rows) for `pixels` pixels at G = 2^grid_log2: one at or beyond the last pixel.
+constexpr int knot_count(int pixels, int grid_log2) { return ((pixels - 1) >> grid_log2) + 2; }
+
 /// The signed knot coordinate width for images up to max_wh pixels on a side: an integer part of
 /// clog2(max_wh) + 2 bits (KnotBits below) and knot_frac_bits fractional bits. The host's
 /// default for a run-time size (host/rectify/map_grid.hpp) is the same expression.
@@ -56,8 +59,8 @@ struct MapGridParams {
   static constexpr int kFracBits = FracBits;
   static constexpr int kKnotFracBits = KnotFracBits;
   static constexpr int kMaxWH = MaxWidthPx > MaxHeight ? MaxWidthPx : MaxHeight;
-  static constexpr int kMaxKnotCols = ((MaxWidthPx - 1) >> GridLog2) + 2;
-  static constexpr int kMaxKnotRows = ((MaxHeight - 1) >> GridLog2) + 2;
+  static constexpr int kMaxKnotCols = knot_count(MaxWidthPx, GridLog2);
+  static constexpr int kMaxKnotRows = knot_count(MaxHeight, GridLog2);
   /// Widths of the knot write address {row, col} (col in the low bits).
   static constexpr int kKnotColBits = clog2(kMaxKnotCols);
   static constexpr int kKnotRowBits = clog2(kMaxKnotRows);

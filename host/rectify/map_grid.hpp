@@ -36,8 +36,8 @@ struct KnotGrid {
   }
 };
 
-/// Knot columns (rows) for `pixels` pixels at G = 2^grid_log2: one at or beyond the last pixel.
-constexpr int knot_count(int pixels, int grid_log2) { return ((pixels - 1) >> grid_log2) + 2; }
+/// Knot columns (rows) for `pixels` pixels at G = 2^grid_log2 (the block's own count).
+using hls::rectify::knot_count;
 
 /// The knot width the block uses for images up to max(width, height) (MapGridParams::kKnotBits).
 int default_knot_bits(int width, int height, int knot_frac_bits);
