@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/bits.hpp"
 
 namespace scw::hls::disparity {
 
@@ -62,12 +63,8 @@ struct DisparityConfig {
 /// levels of prefix sums across the lanes, the window sums (docs/disparity.md).
 constexpr int front_latency(int ppc) { return 7 + (ppc == 4 ? 2 : ppc == 2 ? 1 : 0); }
 
-/// The smallest power of two >= n: the result queue's depth in beats.
-constexpr int queue_words(int n) {
-  int w = 1;
-  while (w < n) w *= 2;
-  return w;
-}
+/// The result queue's depth in beats for n in flight: the smallest power of two >= n.
+constexpr int queue_words(int n) { return pow2_at_least(n); }
 
 /// The number of candidates a stage built for NumDisp evaluates under `c`.
 template <int NumDisp>

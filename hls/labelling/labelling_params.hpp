@@ -7,18 +7,12 @@
 #include <cstdint>
 
 #include "hls/common/beat.hpp"
+#include "hls/common/bits.hpp"
 
 namespace scw::hls::labelling {
 
 /// One input disparity, Q11.4 in 16 bits as the disparity stage emits it.
 using disp_t = std::uint16_t;
-
-/// The smallest power of two >= n (n >= 1).
-constexpr int pow2_at_least(int n) {
-  int p = 1;
-  while (p < n) p *= 2;
-  return p;
-}
 
 /// Wide enough for S_3(65535) S_0(65535) (about 2^78).
 __extension__ typedef unsigned __int128 u128;
