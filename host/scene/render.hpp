@@ -44,7 +44,9 @@ Hit cast_ray(const cv::Vec3d& origin, const cv::Vec3d& direction,
 /// The renderer of one rig: its two ray tables, built once (about a second each).
 class Renderer {
  public:
-  explicit Renderer(const StereoRig& rig, int subsamples = 3);
+  /// Rays per pixel and axis of every scene docs/scene.md measured (`scw scene --subsamples`).
+  static constexpr int kDefaultSubsamples = 3;
+  explicit Renderer(const StereoRig& rig, int subsamples = kDefaultSubsamples);
 
   const StereoRig& rig() const { return rig_; }
   const RayTable& rays(Side s) const { return s == Side::left ? left_ : right_; }

@@ -10,7 +10,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/same_files.sh"
 scw=$1 work=$2
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-"$scw" scene --preset cyclist-crossing --frames 7 --out-dir seq >/dev/null 2>&1
+"$scw" scene --preset cyclist-crossing --frames 7 --subsamples 1 --out-dir seq >/dev/null 2>&1
 run=(run --calib seq/calibration.yml --sequence seq --min-disp 12 --max-disp 56 --window 21
      --tiles 8x4 --pictures overlay)
 

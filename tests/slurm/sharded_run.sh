@@ -16,7 +16,7 @@ source "$here/one_node_cluster.sh"
 cluster_start "$work/cluster"
 echo "cluster up in $((SECONDS - start)) s: $(sinfo -h -N -o '%N %T %c CPUs')"
 
-"$scw" scene --preset cyclist-crossing --frames 9 --out-dir seq >/dev/null 2>&1
+"$scw" scene --preset cyclist-crossing --frames 9 --subsamples 1 --out-dir seq >/dev/null 2>&1
 echo "scene made at $((SECONDS - start)) s"
 run=(run --calib seq/calibration.yml --sequence seq --min-disp 12 --max-disp 56 --window 21
      --tiles 8x4 --pictures overlay)
