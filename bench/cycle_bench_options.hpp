@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the stages' cycle benches share (bench/disparity_cycles, bench/rectify_cycles): their
-// options, the printf-style number of their summary tables and their --json file.
+// options and their --json file.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "host/io/json_file.hpp"
+#include "host/io/number_text.hpp"
 
 namespace scw::bench {
 
@@ -26,13 +27,6 @@ inline void add_cycle_options(CLI::App& app, std::vector<int>& ppc, const std::s
   app.add_option("--frames", frames, "frames back to back (>= 2 for a frame period)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-}
-
-/// One number printf-style ("%.3f"), for a row of a summary table.
-inline std::string fmt(const char* format, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
 }
 
 /// --json PATH: every row's record (its member `j`) as one array; nothing when PATH is empty.

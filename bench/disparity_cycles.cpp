@@ -45,7 +45,7 @@
 namespace {
 
 using namespace scw;
-using bench::fmt;
+using host::io::format_number;
 using hls::disparity::DisparityConfig;
 using nlohmann::json;
 
@@ -453,16 +453,16 @@ void print_table(const std::vector<Row>& rows) {
         j["ppc"].get<int>(), j["mode"].get<std::string>().c_str(),
         j["engine"].get<std::string>().c_str(), hp ? (std::to_string(cpf) + star).c_str() : "-",
         hp ? (j["equals_ideal"].get<bool>() ? "yes" : "NO") : "-", lat.c_str(),
-        fmt("%.3f", j["latency_rows_max"].get<double>()).c_str(),
-        fmt("%.4f", j["latency_ms_at_125mhz"].get<double>()).c_str(),
-        hp ? fmt("%.4f", j["ms_per_frame_at_125mhz"].get<double>()).c_str() : "-",
+        format_number("%.3f", j["latency_rows_max"].get<double>()).c_str(),
+        format_number("%.4f", j["latency_ms_at_125mhz"].get<double>()).c_str(),
+        hp ? format_number("%.4f", j["ms_per_frame_at_125mhz"].get<double>()).c_str() : "-",
         static_cast<long long>(j["total_cycles"].get<std::int64_t>()),
-        fmt("%.3f", j["frame_in_to_out_ms_at_125mhz"].get<double>()).c_str(),
-        hp ? fmt("%.3f", j["period_ratio_to_thesis"].get<double>()).c_str() : "-",
-        fmt("%.3g", j["sim_cycles_per_cpu_s"].get<double>()).c_str(),
-        fmt("%.1f", j["cpu_s"].get<double>()).c_str(),
-        fmt("%.4f", j["latency_ratio_to_thesis"].get<double>()).c_str(),
-        fmt("%.3f", j["frame_in_to_out_ratio_to_thesis_latency"].get<double>()).c_str());
+        format_number("%.3f", j["frame_in_to_out_ms_at_125mhz"].get<double>()).c_str(),
+        hp ? format_number("%.3f", j["period_ratio_to_thesis"].get<double>()).c_str() : "-",
+        format_number("%.3g", j["sim_cycles_per_cpu_s"].get<double>()).c_str(),
+        format_number("%.1f", j["cpu_s"].get<double>()).c_str(),
+        format_number("%.4f", j["latency_ratio_to_thesis"].get<double>()).c_str(),
+        format_number("%.3f", j["frame_in_to_out_ratio_to_thesis_latency"].get<double>()).c_str());
   }
   std::printf(
       "\n  cyc/frame: output sof to output sof, last two frames (input sof to sof: see per frame);"

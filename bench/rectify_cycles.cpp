@@ -50,7 +50,7 @@
 namespace {
 
 using namespace scw;
-using bench::fmt;
+using host::io::format_number;
 using bench::kBenchHeight;
 using bench::kBenchRows;
 using bench::kBenchWidth;
@@ -373,17 +373,17 @@ void print_table(const std::vector<Row>& rows) {
                 r.ppc, r.engine.c_str(), has_period ? std::to_string(cpf).c_str() : "-",
                 static_cast<long long>(ideal),
                 has_period
-                    ? fmt("%.4f", static_cast<double>(cpf) / static_cast<double>(ideal)).c_str()
+                    ? format_number("%.4f", static_cast<double>(cpf) / static_cast<double>(ideal)).c_str()
                     : "-",
                 static_cast<long long>(j["latency_cycles"].get<std::int64_t>()),
-                fmt("%.3f", j["latency_rows"].get<double>()).c_str(),
-                fmt("%.3f", j["latency_ms_at_125mhz"].get<double>()).c_str(),
+                format_number("%.3f", j["latency_rows"].get<double>()).c_str(),
+                format_number("%.3f", j["latency_ms_at_125mhz"].get<double>()).c_str(),
                 static_cast<long long>(j["total_cycles"].get<std::int64_t>()),
-                has_period ? fmt("%.3f", j["ms_per_frame_at_125mhz"].get<double>()).c_str() : "-",
-                fmt("%.3f", j["total_ms_at_125mhz"].get<double>()).c_str(), q.str().c_str(),
-                fmt("%.3g", j["sim_cycles_per_cpu_s"].get<double>()).c_str(),
-                fmt("%.2f", j["cpu_s"].get<double>()).c_str(),
-                fmt("%.2f", j["wall_s"].get<double>()).c_str());
+                has_period ? format_number("%.3f", j["ms_per_frame_at_125mhz"].get<double>()).c_str() : "-",
+                format_number("%.3f", j["total_ms_at_125mhz"].get<double>()).c_str(), q.str().c_str(),
+                format_number("%.3g", j["sim_cycles_per_cpu_s"].get<double>()).c_str(),
+                format_number("%.2f", j["cpu_s"].get<double>()).c_str(),
+                format_number("%.2f", j["wall_s"].get<double>()).c_str());
   }
   std::printf("\nper frame (rectify stage; cycles; period = last_out - previous last_out):\n");
   std::printf("%-3s %-6s %5s %10s %10s %10s %10s %10s %10s\n", "P", "engine", "frame", "first_in",

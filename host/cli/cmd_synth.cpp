@@ -2,7 +2,6 @@
 // `scw synth`: synthesises every stage and the pipeline top with Yosys at one build and prints
 // their resources and worst timing path (host/synth/).
 #include <algorithm>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -11,6 +10,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/value_checks.hpp"
+#include "host/io/number_text.hpp"
 #include "host/synth/builds.hpp"
 #include "host/synth/timing.hpp"
 
@@ -19,11 +19,7 @@ namespace {
 
 namespace syn = host::synth;
 
-std::string fixed(double v, int decimals) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.*f", decimals, v);
-  return b;
-}
+using host::io::fixed;
 
 std::vector<std::string> row_of(const syn::Result& r) {
   std::string lv = syn::levels_text(r.levels);

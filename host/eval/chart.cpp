@@ -8,6 +8,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "host/io/number_text.hpp"
+
 namespace scw::host::eval {
 
 namespace {
@@ -83,9 +85,7 @@ std::vector<Tick> numeric_ticks(double lo, double hi, double step) {
   const int dec = decimals(step);
   for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + step * 1e-9; k += 1.0) {
     const double v = k == 0.0 ? 0.0 : k * step;  // no "-0"
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", dec, v);
-    ticks.push_back({v, buf});
+    ticks.push_back({v, io::fixed(v, dec)});
   }
   return ticks;
 }

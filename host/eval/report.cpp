@@ -10,6 +10,7 @@
 
 #include "host/eval/surfaces.hpp"
 #include "host/io/json_file.hpp"
+#include "host/io/number_text.hpp"
 
 namespace scw::host::eval {
 
@@ -17,14 +18,12 @@ namespace {
 
 using nlohmann::json;
 
-std::string format(const char* fmt, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, v);
-  return buf;
-}
+using io::format_number;
 
-std::string metres(const std::optional<double>& m) { return m ? format("%.3f", *m) : "-"; }
-std::string percent(const std::optional<double>& f) { return f ? format("%+.2f", 100 * *f) : "-"; }
+std::string metres(const std::optional<double>& m) { return m ? format_number("%.3f", *m) : "-"; }
+std::string percent(const std::optional<double>& f) {
+  return f ? format_number("%+.2f", 100 * *f) : "-";
+}
 
 std::string joined(const std::vector<std::string>& v) {
   std::string s;
@@ -79,16 +78,16 @@ void print_report(std::ostream& out, const EvalReport& r) {
   out << "frames                 " << n << "\n";
   out << "with both distances    " << r.frames_with_distance << "\n";
   if (r.max_rel_distance_error) {
-    out << "max |rel. error|       " << format("%.2f %%", 100 * *r.max_rel_distance_error)
+    out << "max |rel. error|       " << format_number("%.2f %%", 100 * *r.max_rel_distance_error)
         << " at frame " << r.max_error_frame << "   (thesis bar 5 %: "
         << (*r.max_rel_distance_error <= kThesisDistanceBar ? "within" : "above") << ")\n";
-    out << "mean |rel. error|      " << format("%.2f %%", 100 * *r.mean_rel_distance_error)
+    out << "mean |rel. error|      " << format_number("%.2f %%", 100 * *r.mean_rel_distance_error)
         << "\n";
   } else {
     out << "max |rel. error|       - (no frame has both distances; thesis bar 5 %)\n";
   }
   out << "severity agreement     " << n - static_cast<std::size_t>(r.severity_disagreements)
-      << " / " << n << " = " << format("%.1f %%", 100 * r.severity_agreement) << "\n";
+      << " / " << n << " = " << format_number("%.1f %%", 100 * r.severity_agreement) << "\n";
   if (r.surfaces_traced) {
     out << "decided by             ";
     for (const auto& [name, count] : surface_counts(r)) out << name << " " << count << "  ";

@@ -12,6 +12,7 @@
 #include "hls/pipeline/pipeline_params.hpp"
 #include "hls/road/road.hpp"
 #include "host/io/image_file.hpp"
+#include "host/io/number_text.hpp"
 #include "host/reference/road_ref.hpp"
 #include "host/road/setup.hpp"
 #include "host/vectors/road_maps.hpp"
@@ -46,11 +47,7 @@ double distance_px(const reference::RoadLinePx& x, const reference::RoadLinePx& 
   return std::max(std::abs(db), std::abs(db + da * (height - 1)));
 }
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
+using host::io::fixed;
 
 std::string line_text(const Line& l) {
   std::ostringstream s;
